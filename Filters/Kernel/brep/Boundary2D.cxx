@@ -1,0 +1,473 @@
+#include "Boundary2D.h"
+
+#include "common/InputError.h"
+#include "geometry/Flatten.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace exactmat
+{
+
+const char* toString(VertexKind kind)
+{
+  switch (kind)
+  {
+    case VertexKind::Convex:
+      return "convex";
+    case VertexKind::Reflex:
+      return "reflex";
+    default:
+      return "smooth";
+  }
+}
+
+std::string Edge2D::name() const
+{
+  std::string s = "edge " + std::to_string(piece);
+  if (entity >= 0 && entity != piece)
+  {
+    s += " (entity " + std::to_string(entity) + ")";
+  }
+  return s;
+}
+
+namespace
+{
+std::string pieceName(const std::vector<CurvePiece>& pieces, size_t i)
+{
+  Edge2D e;
+  e.piece = static_cast<int>(i);
+  e.entity = pieces[i].entity;
+  return e.name();
+}
+
+std::string format(const Vec3& p)
+{
+  std::ostringstream os;
+  os.precision(9);
+  os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return os.str();
+}
+
+struct UnionFind
+{
+  std::vector<int> parent;
+  explicit UnionFind(int n)
+    : parent(n)
+  {
+    std::iota(parent.begin(), parent.end(), 0);
+  }
+  int find(int a)
+  {
+    while (parent[a] != a)
+    {
+      parent[a] = parent[parent[a]];
+      a = parent[a];
+    }
+    return a;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+// 16-point Gauss–Legendre on [0,1].
+const double GaussX[8] = { 0.0950125098376374, 0.2816035507792589, 0.4580167776572274,
+  0.6178762444026438, 0.7554044083550030, 0.8656312023878318, 0.9445750230732326,
+  0.9894009349916499 };
+const double GaussW[8] = { 0.1894506104550685, 0.1826034150449236, 0.1691565193950025,
+  0.1495959888165767, 0.1246289712555339, 0.0951585116824928, 0.0622535239386479,
+  0.0271524594117541 };
+
+// ½∮(x dy − y dx) over one curve, on 4 sub-intervals of 16 Gauss points each.
+double areaContribution(const BezierCurve& c)
+{
+  double sum = 0.0;
+  for (int part = 0; part < 4; ++part)
+  {
+    const double a = 0.25 * part, h = 0.25;
+    for (int k = 0; k < 8; ++k)
+    {
+      for (int sgn = -1; sgn <= 1; sgn += 2)
+      {
+        const double t = a + 0.5 * h * (1.0 + sgn * GaussX[k]);
+        const CurveDerivatives d = c.derivatives(t);
+        sum += 0.5 * h * GaussW[k] * 0.5 * (d.point.x() * d.d1.y() - d.point.y() * d.d1.x());
+      }
+    }
+  }
+  return sum;
+}
+
+double orient2d(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+bool onSegment(const Vec3& a, const Vec3& b, const Vec3& p)
+{
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+    std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+}
+
+bool segmentsIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const double d1 = orient2d(c, d, a), d2 = orient2d(c, d, b);
+  const double d3 = orient2d(a, b, c), d4 = orient2d(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+  {
+    return true;
+  }
+  return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) ||
+    (d3 == 0 && onSegment(a, b, c)) || (d4 == 0 && onSegment(a, b, d));
+}
+
+// Crossing-number test of p against a closed polyline.
+bool insidePolyline(const Vec3List& poly, const Vec3& p)
+{
+  bool inside = false;
+  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+  {
+    const Vec3& a = poly[i];
+    const Vec3& b = poly[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()))
+    {
+      const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (p.x() < x)
+      {
+        inside = !inside;
+      }
+    }
+  }
+  return inside;
+}
+} // namespace
+
+Boundary2D Boundary2D::build(const std::vector<CurvePiece>& pieces, const Options& options)
+{
+  if (pieces.empty())
+  {
+    fail("empty input: the boundary has no curves");
+  }
+  Boundary2D b;
+  for (size_t i = 0; i < pieces.size(); ++i)
+  {
+    pieces[i].curve.toNurbs().validate(pieceName(pieces, i));
+  }
+  b.findPlane(pieces, options);
+  b.findLoops(pieces, options);
+  b.orientLoops();
+  b.checkIntersections();
+  b.classifyVertices(options);
+  return b;
+}
+
+void Boundary2D::findPlane(const std::vector<CurvePiece>& pieces, const Options& options)
+{
+  Vec3List points;
+  Box3 box;
+  for (const CurvePiece& p : pieces)
+  {
+    for (int i = 0; i <= p.curve.degree(); ++i)
+    {
+      points.push_back(p.curve.controlPoint(i));
+      box.extend(points.back());
+    }
+  }
+  Diagonal = box.diagonal().norm();
+  if (!(Diagonal > 0.0))
+  {
+    fail("degenerate input: all ", points.size(), " control points coincide at ",
+      format(points.front()));
+  }
+  ThePlane = Plane::fit(points);
+  const double tol = options.planarityTolerance * Diagonal;
+  for (size_t i = 0; i < pieces.size(); ++i)
+  {
+    for (int k = 0; k <= pieces[i].curve.degree(); ++k)
+    {
+      const double off = ThePlane.toLocal(pieces[i].curve.controlPoint(k)).z();
+      if (std::abs(off) > tol)
+      {
+        fail("non-planar boundary: control point ", k, " of ", pieceName(pieces, i), " lies ",
+          off, " off the plane through the boundary (tolerance ", tol, ")");
+      }
+    }
+  }
+}
+
+void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options& options)
+{
+  const int n = static_cast<int>(pieces.size());
+  const double tol = options.pointTolerance * Diagonal;
+  // Local-frame curves with z set to exactly 0 (planarity was checked).
+  std::vector<BezierCurve> local(n);
+  for (int i = 0; i < n; ++i)
+  {
+    Vec4List h = pieces[i].curve.homogeneousPoints();
+    for (Vec4& p : h)
+    {
+      p = ThePlane.toLocalHomogeneous(p);
+      p.z() = 0.0;
+    }
+    local[i] = BezierCurve(std::move(h));
+    const Box3 box = local[i].boundingBox();
+    if (!(box.diagonal().norm() > tol))
+    {
+      fail(pieceName(pieces, i), " is degenerate: all its control points coincide at ",
+        format(pieces[i].curve.startPoint()));
+    }
+  }
+  // Ends 2i (start) and 2i+1 (end) of piece i, merged by shared ids, then by coordinates.
+  auto endPoint = [&](int e) {
+    return (e % 2 == 0) ? local[e / 2].startPoint() : local[e / 2].endPoint();
+  };
+  UnionFind uf(2 * n);
+  std::map<long long, int> byId;
+  for (int e = 0; e < 2 * n; ++e)
+  {
+    const long long id = (e % 2 == 0) ? pieces[e / 2].startId : pieces[e / 2].endId;
+    if (id >= 0)
+    {
+      auto [it, inserted] = byId.emplace(id, e);
+      if (!inserted)
+      {
+        uf.unite(e, it->second);
+      }
+    }
+  }
+  std::vector<int> order(2 * n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+    [&](int a, int b) { return endPoint(a).x() < endPoint(b).x(); });
+  for (int a = 0; a < 2 * n; ++a)
+  {
+    const Vec3 pa = endPoint(order[a]);
+    for (int c = a + 1; c < 2 * n && endPoint(order[c]).x() - pa.x() <= tol; ++c)
+    {
+      if ((endPoint(order[c]) - pa).norm() <= tol)
+      {
+        uf.unite(order[a], order[c]);
+      }
+    }
+  }
+  std::map<int, std::vector<int>> groups;
+  for (int e = 0; e < 2 * n; ++e)
+  {
+    groups[uf.find(e)].push_back(e);
+  }
+  std::vector<int> partner(2 * n, -1);
+  for (const auto& [root, ends] : groups)
+  {
+    if (ends.size() == 1)
+    {
+      const int e = ends.front();
+      fail("open loop: ", pieceName(pieces, e / 2), (e % 2 == 0 ? " starts" : " ends"), " at ",
+        format(pieces[e / 2].curve.evaluate(e % 2 == 0 ? 0.0 : 1.0)),
+        " where no other edge starts or ends");
+    }
+    if (ends.size() > 2)
+    {
+      std::string names;
+      for (int e : ends)
+      {
+        names += (names.empty() ? "" : ", ") + pieceName(pieces, e / 2);
+      }
+      fail("non-manifold vertex at ", format(pieces[ends[0] / 2].curve.evaluate(ends[0] % 2)),
+        ": ", ends.size(), " edge ends meet there (", names,
+        "); each vertex must join exactly two edges");
+    }
+    partner[ends[0]] = ends[1];
+    partner[ends[1]] = ends[0];
+  }
+  // Walk the loops; an edge met against its direction is reversed.
+  std::vector<bool> used(n, false);
+  Edges.resize(n);
+  for (int start = 0; start < n; ++start)
+  {
+    if (used[start])
+    {
+      continue;
+    }
+    Loop2D loop;
+    int edge = start;
+    bool reversed = false;
+    for (int guard = 0; guard <= n && !used[edge]; ++guard)
+    {
+      used[edge] = true;
+      Edge2D& e = Edges[edge];
+      e.piece = edge;
+      e.entity = pieces[edge].entity;
+      e.reversed = reversed;
+      e.curve = reversed ? local[edge].reversed() : local[edge];
+      e.loop = static_cast<int>(Loops.size());
+      loop.edges.push_back(edge);
+      const int exitEnd = 2 * edge + (reversed ? 0 : 1);
+      const int enterEnd = partner[exitEnd];
+      edge = enterEnd / 2;
+      reversed = (enterEnd % 2 == 1);
+    }
+    Loops.push_back(std::move(loop));
+  }
+}
+
+void Boundary2D::orientLoops()
+{
+  const double flatTol = 1e-7 * Diagonal;
+  std::vector<Vec3List> polys(Loops.size());
+  for (size_t l = 0; l < Loops.size(); ++l)
+  {
+    double area = 0.0;
+    for (int e : Loops[l].edges)
+    {
+      area += areaContribution(Edges[e].curve);
+      const Vec3List pts = flatten(Edges[e].curve, flatTol);
+      polys[l].insert(polys[l].end(), pts.begin(), pts.end() - 1);
+    }
+    Loops[l].signedArea = area;
+  }
+  for (size_t l = 0; l < Loops.size(); ++l)
+  {
+    const Vec3 probe = Edges[Loops[l].edges.front()].curve.startPoint();
+    int depth = 0;
+    double parentArea = std::numeric_limits<double>::infinity();
+    for (size_t m = 0; m < Loops.size(); ++m)
+    {
+      if (m != l && insidePolyline(polys[m], probe))
+      {
+        ++depth;
+        if (std::abs(Loops[m].signedArea) < parentArea)
+        {
+          parentArea = std::abs(Loops[m].signedArea);
+          Loops[l].parent = static_cast<int>(m);
+        }
+      }
+    }
+    Loop2D& loop = Loops[l];
+    loop.outer = (depth % 2 == 0);
+    if ((loop.outer && loop.signedArea < 0.0) || (!loop.outer && loop.signedArea > 0.0))
+    {
+      std::reverse(loop.edges.begin(), loop.edges.end());
+      for (int e : loop.edges)
+      {
+        Edges[e].curve = Edges[e].curve.reversed();
+        Edges[e].reversed = !Edges[e].reversed;
+      }
+      loop.signedArea = -loop.signedArea;
+      loop.flipped = true;
+    }
+  }
+}
+
+void Boundary2D::checkIntersections() const
+{
+  struct Segment
+  {
+    Vec3 a, b;
+    int edge, loop, index, loopSize;
+    double minX, maxX;
+  };
+  std::vector<Segment> segs;
+  const double flatTol = 1e-7 * Diagonal;
+  for (size_t l = 0; l < Loops.size(); ++l)
+  {
+    const size_t first = segs.size();
+    for (int e : Loops[l].edges)
+    {
+      const Vec3List pts = flatten(Edges[e].curve, flatTol);
+      for (size_t k = 0; k + 1 < pts.size(); ++k)
+      {
+        Segment s{ pts[k], pts[k + 1], e, static_cast<int>(l), static_cast<int>(segs.size() - first),
+          0, std::min(pts[k].x(), pts[k + 1].x()), std::max(pts[k].x(), pts[k + 1].x()) };
+        segs.push_back(s);
+      }
+    }
+    for (size_t k = first; k < segs.size(); ++k)
+    {
+      segs[k].loopSize = static_cast<int>(segs.size() - first);
+    }
+  }
+  std::sort(segs.begin(), segs.end(),
+    [](const Segment& a, const Segment& b) { return a.minX < b.minX; });
+  for (size_t i = 0; i < segs.size(); ++i)
+  {
+    const Segment& s = segs[i];
+    for (size_t j = i + 1; j < segs.size() && segs[j].minX <= s.maxX; ++j)
+    {
+      const Segment& t = segs[j];
+      if (s.loop == t.loop)
+      {
+        const int d = std::abs(s.index - t.index);
+        if (d <= 1 || d == s.loopSize - 1)
+        {
+          continue; // neighbours along the loop share an end point
+        }
+      }
+      if (segmentsIntersect(s.a, s.b, t.a, t.b))
+      {
+        const Vec3 at = ThePlane.toWorld(0.5 * (s.a + s.b));
+        if (s.loop == t.loop)
+        {
+          fail("self-intersecting loop ", s.loop, ": ", Edges[s.edge].name(),
+            (s.edge == t.edge ? " crosses itself" : " crosses " + Edges[t.edge].name()),
+            " near ", format(at));
+        }
+        fail("loops ", s.loop, " and ", t.loop, " intersect: ", Edges[s.edge].name(),
+          " crosses ", Edges[t.edge].name(), " near ", format(at));
+      }
+    }
+  }
+}
+
+void Boundary2D::classifyVertices(const Options& options)
+{
+  for (const Loop2D& loop : Loops)
+  {
+    const size_t n = loop.edges.size();
+    for (size_t k = 0; k < n; ++k)
+    {
+      Edge2D& in = Edges[loop.edges[k]];
+      Edge2D& out = Edges[loop.edges[(k + 1) % n]];
+      Vertex2D v;
+      v.point = in.curve.endPoint();
+      v.incoming = loop.edges[k];
+      v.outgoing = loop.edges[(k + 1) % n];
+      const Vec3 a = in.curve.endTangent(true), b = out.curve.endTangent(false);
+      v.turningAngle = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      if (std::abs(v.turningAngle) > M_PI - options.angularTolerance)
+      {
+        fail("cusp where ", in.name(), " meets ", out.name(), " at ",
+          format(ThePlane.toWorld(v.point)),
+          ": the tangents are opposite (interior angle 0 or 360 degrees)");
+      }
+      if (std::abs(v.turningAngle) <= options.angularTolerance)
+      {
+        v.kind = VertexKind::Smooth;
+      }
+      else
+      {
+        v.kind = v.turningAngle > 0.0 ? VertexKind::Convex : VertexKind::Reflex;
+      }
+      const int id = static_cast<int>(Vertices.size());
+      in.endVertex = id;
+      out.startVertex = id;
+      Vertices.push_back(v);
+    }
+  }
+}
+
+int Boundary2D::holeCount() const
+{
+  return static_cast<int>(
+    std::count_if(Loops.begin(), Loops.end(), [](const Loop2D& l) { return !l.outer; }));
+}
+
+int Boundary2D::countVertices(VertexKind kind) const
+{
+  return static_cast<int>(std::count_if(
+    Vertices.begin(), Vertices.end(), [kind](const Vertex2D& v) { return v.kind == kind; }));
+}
+
+} // namespace exactmat

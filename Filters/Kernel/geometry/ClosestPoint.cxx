@@ -1,0 +1,592 @@
+#include "ClosestPoint.h"
+
+#include "nurbs/Bernstein.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace exactmat
+{
+
+double distanceToBox(const Box3& box, const Vec3& p)
+{
+  if (box.isEmpty())
+  {
+    return Unbounded;
+  }
+  const Vec3 d = (box.min() - p).cwiseMax(p - box.max()).cwiseMax(Vec3::Zero());
+  return d.norm();
+}
+
+namespace
+{
+// Bounds of the recursions: 2^-48 of a parameter interval is far below double resolution
+// of a footpoint, and a root cluster that has not separated by then is one footpoint.
+constexpr int MaxCurveDepth = 48;
+constexpr int MaxPatchDepth = 24;
+// Split a little off the middle: symmetric shapes put roots exactly at t = 1/2.
+constexpr double SplitAt = 0.4871;
+
+// Components of a homogeneous Bézier curve as Bernstein polynomials.
+struct CurvePolys
+{
+  BernsteinPoly d[3]; ///< D = A − P·w
+  BernsteinPoly w;
+};
+
+CurvePolys curvePolys(const BezierCurve& c, const Vec3& q)
+{
+  CurvePolys cp;
+  const int p = c.degree();
+  for (int k = 0; k < 3; ++k)
+  {
+    cp.d[k].c.resize(p + 1);
+  }
+  cp.w.c.resize(p + 1);
+  for (int i = 0; i <= p; ++i)
+  {
+    const Vec4& h = c.homogeneousPoints()[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      cp.d[k].c[i] = h(k) - q(k) * h.w();
+    }
+    cp.w.c[i] = h.w();
+  }
+  return cp;
+}
+
+bool constantWeights(const BernsteinPoly& w)
+{
+  for (double v : w.c)
+  {
+    if (v != w.c.front())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// g with sign((C − P)·C'): D·D' for polynomial curves, D·(D'w − Dw') for rational ones.
+BernsteinPoly stationarityPoly(const CurvePolys& cp)
+{
+  BernsteinPoly g;
+  const bool polynomial = constantWeights(cp.w);
+  const BernsteinPoly dw = cp.w.derivative();
+  for (int k = 0; k < 3; ++k)
+  {
+    const BernsteinPoly dk = cp.d[k].derivative();
+    BernsteinPoly term = polynomial ? cp.d[k] * dk : cp.d[k] * (dk * cp.w - cp.d[k] * dw);
+    g = g.c.empty() ? term : g + term;
+  }
+  return g;
+}
+
+// Newton polish of f(t) = (C − P)·C' = 0 from t0, kept inside [lo, hi].
+double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, double hi)
+{
+  for (int it = 0; it < 8; ++it)
+  {
+    const CurveDerivatives d = c.derivatives(t);
+    const Vec3 r = d.point - q;
+    const double f = r.dot(d.d1);
+    const double fp = d.d1.squaredNorm() + r.dot(d.d2);
+    if (!(fp > 0.0))
+    {
+      break;
+    }
+    const double next = std::min(hi, std::max(lo, t - f / fp));
+    if (std::abs(next - t) < 1e-16)
+    {
+      t = next;
+      break;
+    }
+    t = next;
+  }
+  return t;
+}
+
+// Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) by Illinois.
+double bracketRoot(const BernsteinPoly& g, double a, double b, double ga, double gb)
+{
+  for (int it = 0; it < 200 && b - a > 1e-17; ++it)
+  {
+    double m = (a * gb - b * ga) / (gb - ga);
+    if (!(m > a && m < b))
+    {
+      m = 0.5 * (a + b);
+    }
+    const double gm = g(m);
+    if (gm == 0.0)
+    {
+      return m;
+    }
+    if ((gm < 0.0) == (ga < 0.0))
+    {
+      a = m;
+      ga = gm;
+      gb *= 0.5;
+    }
+    else
+    {
+      b = m;
+      gb = gm;
+      ga *= 0.5;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+struct RootFinder
+{
+  const BernsteinPoly& g; // on the whole [0,1]
+  double zero;
+  std::vector<double> minima; // parameters where g goes from − to +
+
+  void classifyAt(double t, double h)
+  {
+    const double before = g(std::max(0.0, t - h)), after = g(std::min(1.0, t + h));
+    if (before <= zero && after >= -zero && !(before == 0.0 && after == 0.0))
+    {
+      minima.push_back(t);
+    }
+  }
+
+  void search(const BernsteinPoly& local, double a, double b, int depth)
+  {
+    const int changes = local.signChanges(zero);
+    if (changes == 0)
+    {
+      return;
+    }
+    const double ga = g(a), gb = g(b);
+    if (changes == 1 && ga < -zero && gb > zero)
+    {
+      minima.push_back(bracketRoot(g, a, b, ga, gb));
+      return;
+    }
+    if (changes == 1 && ga > zero && gb < -zero)
+    {
+      return; // a single maximum of the distance
+    }
+    if (depth >= MaxCurveDepth)
+    {
+      classifyAt(0.5 * (a + b), b - a);
+      return;
+    }
+    BernsteinPoly left, right;
+    local.split(SplitAt, left, right);
+    const double m = a + SplitAt * (b - a);
+    if (std::abs(g(m)) <= zero)
+    {
+      classifyAt(m, 1e-3 * (b - a));
+    }
+    search(left, a, m, depth + 1);
+    search(right, m, b, depth + 1);
+  }
+};
+
+void sortAndDedupe(std::vector<CurveFootpoint>& fps)
+{
+  std::sort(fps.begin(), fps.end(),
+    [](const CurveFootpoint& a, const CurveFootpoint& b) { return a.t < b.t; });
+  std::vector<CurveFootpoint> out;
+  for (const CurveFootpoint& f : fps)
+  {
+    if (!out.empty() && std::abs(f.t - out.back().t) < 1e-9)
+    {
+      if (f.distance < out.back().distance || f.atEnd)
+      {
+        const bool end = out.back().atEnd || f.atEnd;
+        out.back() = f;
+        out.back().atEnd = end;
+      }
+      continue;
+    }
+    out.push_back(f);
+  }
+  std::sort(out.begin(), out.end(),
+    [](const CurveFootpoint& a, const CurveFootpoint& b) { return a.distance < b.distance; });
+  fps.swap(out);
+}
+} // namespace
+
+std::vector<CurveFootpoint> curveFootpoints(
+  const BezierCurve& curve, const Vec3& query, double maxDistance)
+{
+  std::vector<CurveFootpoint> result;
+  if (distanceToBox(curve.boundingBox(), query) > maxDistance)
+  {
+    return result;
+  }
+  const CurvePolys cp = curvePolys(curve, query);
+  const BernsteinPoly g = stationarityPoly(cp);
+  // The scale of g: |D|·|D'|·w² bounds its coefficients; 1e-14 of it is rounding noise.
+  double dMax = 0.0, dpMax = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    dMax = std::max(dMax, cp.d[k].maxAbs());
+    dpMax = std::max(dpMax, cp.d[k].derivative().maxAbs());
+  }
+  const double wMax = cp.w.maxAbs();
+  const double scale = dMax * (dpMax + dMax) * wMax * (constantWeights(cp.w) ? 1.0 : wMax);
+  const double zero = 1e-14 * scale;
+  auto make = [&](double t, bool atEnd) {
+    CurveFootpoint f;
+    f.t = t;
+    f.point = curve.evaluate(t);
+    f.distance = (f.point - query).norm();
+    f.atEnd = atEnd;
+    return f;
+  };
+
+  if (g.maxAbs() <= zero)
+  {
+    // Every point is stationary: the query is the centre of a circular arc (or the curve is
+    // a point). Report one footpoint for the whole curve.
+    CurveFootpoint f = make(0.5, false);
+    f.continuum = true;
+    if (f.distance <= maxDistance)
+    {
+      result.push_back(f);
+    }
+    return result;
+  }
+
+  RootFinder finder{ g, zero, {} };
+  finder.search(g, 0.0, 1.0, 0);
+  for (double t : finder.minima)
+  {
+    if (t <= 0.0 || t >= 1.0)
+    {
+      continue; // ends are handled below
+    }
+    result.push_back(make(polishCurve(curve, query, t, 0.0, 1.0), false));
+  }
+  // An end is a one-sided minimum when the distance does not decrease into the curve.
+  if (g.c.front() >= -zero)
+  {
+    result.push_back(make(0.0, true));
+  }
+  if (g.c.back() <= zero)
+  {
+    result.push_back(make(1.0, true));
+  }
+  for (CurveFootpoint& f : result)
+  {
+    f.atEnd = f.atEnd || f.t <= 0.0 || f.t >= 1.0;
+  }
+  sortAndDedupe(result);
+  result.erase(std::remove_if(result.begin(), result.end(),
+                 [&](const CurveFootpoint& f) { return f.distance > maxDistance; }),
+    result.end());
+  return result;
+}
+
+CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query)
+{
+  const std::vector<CurveFootpoint> fps = curveFootpoints(curve, query);
+  if (!fps.empty())
+  {
+    return fps.front();
+  }
+  // Not reachable for valid curves (an end is always a candidate); keep a defined answer.
+  CurveFootpoint f;
+  f.point = curve.startPoint();
+  f.distance = (f.point - query).norm();
+  f.atEnd = true;
+  return f;
+}
+
+// ---------------------------------------------------------------------------------------
+// patches
+
+namespace
+{
+struct PatchPolys
+{
+  BernsteinPoly2 gu, gv; ///< signs of (S − P)·Su and (S − P)·Sv
+  double zero = 0.0;
+};
+
+PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
+{
+  const int p = patch.degreeU(), r = patch.degreeV();
+  BernsteinPoly2 d[3], w(p, r);
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = BernsteinPoly2(p, r);
+  }
+  bool polynomial = true;
+  const double w00 = patch.homogeneousPoint(0, 0).w();
+  for (int i = 0; i <= p; ++i)
+  {
+    for (int j = 0; j <= r; ++j)
+    {
+      const Vec4& h = patch.homogeneousPoint(i, j);
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k].at(i, j) = h(k) - q(k) * h.w();
+      }
+      w.at(i, j) = h.w();
+      polynomial = polynomial && h.w() == w00;
+    }
+  }
+  PatchPolys pp;
+  const BernsteinPoly2 wu = w.derivativeU(), wv = w.derivativeV();
+  double dMax = 0.0, dpMax = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const BernsteinPoly2 du = d[k].derivativeU(), dv = d[k].derivativeV();
+    const BernsteinPoly2 tu = polynomial ? d[k] * du : d[k] * (du * w - d[k] * wu);
+    const BernsteinPoly2 tv = polynomial ? d[k] * dv : d[k] * (dv * w - d[k] * wv);
+    pp.gu = (k == 0) ? tu : pp.gu + tu;
+    pp.gv = (k == 0) ? tv : pp.gv + tv;
+    dMax = std::max(dMax, d[k].maxAbs());
+    dpMax = std::max({ dpMax, du.maxAbs(), dv.maxAbs() });
+  }
+  const double wMax = w.maxAbs();
+  pp.zero = 1e-13 * dMax * (dpMax + dMax) * wMax * (polynomial ? 1.0 : wMax);
+  return pp;
+}
+
+struct Interval
+{
+  double lo, hi;
+};
+
+Interval bounds(const BernsteinPoly2& p)
+{
+  const auto [mn, mx] = std::minmax_element(p.c.begin(), p.c.end());
+  return { *mn, *mx };
+}
+
+Interval mul(Interval a, Interval b)
+{
+  const double c[4] = { a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi };
+  return { *std::min_element(c, c + 4), *std::max_element(c, c + 4) };
+}
+
+// Newton on (f_u, f_v) = ((S−P)·Su, (S−P)·Sv) from (u, v) kept in the box. Returns true when
+// it converged to a point inside the box (slightly enlarged) that is not a maximum/saddle.
+bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, double u0,
+  double u1, double v0, double v1)
+{
+  const double mu = 1e-9 + 1e-6 * (u1 - u0), mv = 1e-9 + 1e-6 * (v1 - v0);
+  for (int it = 0; it < 30; ++it)
+  {
+    const SurfaceDerivatives s = patch.derivatives(u, v);
+    const Vec3 r = s.point - q;
+    const double fu = r.dot(s.su), fv = r.dot(s.sv);
+    const double a = s.su.squaredNorm() + r.dot(s.suu);
+    const double b = s.su.dot(s.sv) + r.dot(s.suv);
+    const double c = s.sv.squaredNorm() + r.dot(s.svv);
+    const double det = a * c - b * b;
+    if (!(std::abs(det) > 0.0))
+    {
+      return false;
+    }
+    const double du = (c * fu - b * fv) / det, dv = (a * fv - b * fu) / det;
+    u -= du;
+    v -= dv;
+    if (u < u0 - mu || u > u1 + mu || v < v0 - mv || v > v1 + mv)
+    {
+      return false;
+    }
+    if (std::abs(du) < 1e-15 && std::abs(dv) < 1e-15)
+    {
+      break;
+    }
+    if (it == 29)
+    {
+      return false;
+    }
+  }
+  u = std::min(1.0, std::max(0.0, u));
+  v = std::min(1.0, std::max(0.0, v));
+  const SurfaceDerivatives s = patch.derivatives(u, v);
+  const Vec3 r = s.point - q;
+  const double a = s.su.squaredNorm() + r.dot(s.suu);
+  const double b = s.su.dot(s.sv) + r.dot(s.suv);
+  const double c = s.sv.squaredNorm() + r.dot(s.svv);
+  // Keep minima (and degenerate, flat minima); drop saddles and maxima.
+  const double tol = 1e-12 * (s.su.squaredNorm() + s.sv.squaredNorm());
+  return a + c >= -tol && a * c - b * b >= -tol * tol;
+}
+
+struct PatchSearch
+{
+  const BezierPatch& patch;
+  const Vec3& q;
+  double maxDistance;
+  double zero;
+  std::vector<PatchFootpoint> found;
+
+  void add(double u, double v)
+  {
+    PatchFootpoint f;
+    f.u = u;
+    f.v = v;
+    f.point = patch.evaluate(u, v);
+    f.distance = (f.point - q).norm();
+    if (f.distance <= maxDistance)
+    {
+      found.push_back(f);
+    }
+  }
+
+  void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, double u0, double u1,
+    double v0, double v1, int depth)
+  {
+    if (gu.hasStrictSign(zero) || gv.hasStrictSign(zero))
+    {
+      return;
+    }
+    if (std::isfinite(maxDistance) &&
+      distanceToBox(patch.subPatch(u0, u1, v0, v1).boundingBox(), q) > maxDistance)
+    {
+      return;
+    }
+    // Interval Jacobian of (gu, gv): if its determinant cannot vanish, the box holds at most
+    // one stationary point and Newton from the centre is tried (row-wise mean value theorem).
+    const Interval a = bounds(gu.derivativeU()), b = bounds(gu.derivativeV());
+    const Interval c = bounds(gv.derivativeU()), d = bounds(gv.derivativeV());
+    const Interval ad = mul(a, d), bc = mul(b, c);
+    const bool unique = (ad.lo - bc.hi > 0.0) || (ad.hi - bc.lo < 0.0);
+    if (unique || depth >= MaxPatchDepth)
+    {
+      double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
+      if (newtonPatch(patch, q, u, v, u0, u1, v0, v1))
+      {
+        add(u, v);
+        return;
+      }
+      if (depth >= MaxPatchDepth)
+      {
+        return;
+      }
+    }
+    const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
+    const double su = SplitAt, sv = SplitAt;
+    search(gu.restrictedTo(0, su, 0, sv), gv.restrictedTo(0, su, 0, sv), u0, um, v0, vm,
+      depth + 1);
+    search(gu.restrictedTo(su, 1, 0, sv), gv.restrictedTo(su, 1, 0, sv), um, u1, v0, vm,
+      depth + 1);
+    search(gu.restrictedTo(0, su, sv, 1), gv.restrictedTo(0, su, sv, 1), u0, um, vm, v1,
+      depth + 1);
+    search(gu.restrictedTo(su, 1, sv, 1), gv.restrictedTo(su, 1, sv, 1), um, u1, vm, v1,
+      depth + 1);
+  }
+};
+
+} // namespace
+
+std::vector<PatchFootpoint> patchFootpoints(
+  const BezierPatch& patch, const Vec3& query, double maxDistance)
+{
+  std::vector<PatchFootpoint> result;
+  if (distanceToBox(patch.boundingBox(), query) > maxDistance)
+  {
+    return result;
+  }
+  const PatchPolys pp = patchPolys(patch, query);
+  PatchSearch search{ patch, query, maxDistance, pp.zero, {} };
+  const bool flatU = pp.gu.maxAbs() <= pp.zero, flatV = pp.gv.maxAbs() <= pp.zero;
+  if (flatU && flatV)
+  {
+    search.add(0.5, 0.5); // the query is a centre of the whole patch (a sphere's centre)
+    for (PatchFootpoint& f : search.found)
+    {
+      f.continuum = true;
+    }
+    return search.found;
+  }
+  if (flatU || flatV)
+  {
+    // Distance constant along one parameter (a query on a surface of revolution's axis):
+    // solve along the other parameter's iso-line through the middle.
+    const BezierCurve iso = flatU ? patch.subPatch(0.5, 0.5, 0, 1).side(3).reversed()
+                                  : patch.subPatch(0, 1, 0.5, 0.5).side(0);
+    for (const CurveFootpoint& c : curveFootpoints(iso, query, maxDistance))
+    {
+      PatchFootpoint f;
+      f.u = flatU ? 0.5 : c.t;
+      f.v = flatU ? c.t : 0.5;
+      f.point = c.point;
+      f.distance = c.distance;
+      f.onBoundary = c.atEnd;
+      f.continuum = true;
+      result.push_back(f);
+    }
+    return result;
+  }
+  search.search(pp.gu, pp.gv, 0.0, 1.0, 0.0, 1.0, 0);
+  result = search.found;
+
+  // Minima on the boundary: minima of the side curves where moving inwards does not get
+  // closer, i.e. the inward derivative of the squared distance is ≥ 0.
+  for (int s = 0; s < 4; ++s)
+  {
+    for (const CurveFootpoint& c : curveFootpoints(patch.side(s), query, maxDistance))
+    {
+      PatchFootpoint f;
+      const Vec2 uv = BezierPatch::sideParameter(s, c.t);
+      f.u = uv.x();
+      f.v = uv.y();
+      const SurfaceDerivatives d = patch.derivatives(f.u, f.v);
+      const Vec3 r = d.point - query;
+      const double inward =
+        (s == 0) ? r.dot(d.sv) : (s == 1) ? -r.dot(d.su) : (s == 2) ? -r.dot(d.sv) : r.dot(d.su);
+      const double scale = 1e-10 * (r.norm() + 1.0) * (d.su.norm() + d.sv.norm());
+      if (inward < -scale && !c.continuum)
+      {
+        continue;
+      }
+      f.point = c.point;
+      f.distance = c.distance;
+      f.onBoundary = true;
+      f.continuum = c.continuum;
+      result.push_back(f);
+    }
+  }
+  // Dedupe by position (corners come from two sides; Newton from neighbouring boxes).
+  std::sort(result.begin(), result.end(),
+    [](const PatchFootpoint& a, const PatchFootpoint& b) { return a.distance < b.distance; });
+  std::vector<PatchFootpoint> unique;
+  const double diag = patch.boundingBox().diagonal().norm();
+  for (const PatchFootpoint& f : result)
+  {
+    bool seen = false;
+    for (PatchFootpoint& g : unique)
+    {
+      if ((f.point - g.point).norm() <= 1e-9 * (1.0 + diag) ||
+        (std::abs(f.u - g.u) < 1e-9 && std::abs(f.v - g.v) < 1e-9))
+      {
+        g.onBoundary = g.onBoundary && f.onBoundary;
+        seen = true;
+        break;
+      }
+    }
+    if (!seen)
+    {
+      unique.push_back(f);
+    }
+  }
+  return unique;
+}
+
+PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)
+{
+  const std::vector<PatchFootpoint> fps = patchFootpoints(patch, query);
+  if (!fps.empty())
+  {
+    return fps.front();
+  }
+  PatchFootpoint f;
+  f.point = patch.evaluate(0, 0);
+  f.distance = (f.point - query).norm();
+  f.onBoundary = true;
+  return f;
+}
+
+} // namespace exactmat

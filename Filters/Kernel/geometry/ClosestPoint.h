@@ -1,0 +1,66 @@
+#pragma once
+/// @file ClosestPoint.h
+/// @brief Global closest points and all footpoints from a point to rational Bézier curves
+/// and patches.
+///
+/// The squared distance |C(t) − P|² is stationary where f(t) = (C − P)·C' vanishes. With
+/// C = A/w and D = A − P·w, f has the sign of the polynomial g = D·(D'w − Dw'), which is
+/// written in Bernstein form and its roots isolated by subdivision (a sub-interval whose
+/// coefficients keep one sign is discarded, one with a single sign change holds exactly
+/// one root). So every local minimum is found, not just the one a Newton iteration from a
+/// guess happens to reach. Patches use the same idea on the pair g_u, g_v with an interval
+/// Jacobian test for uniqueness, plus the boundary curves of the patch.
+
+#include "nurbs/BezierCurve.h"
+#include "nurbs/BezierPatch.h"
+
+#include <limits>
+#include <vector>
+
+namespace exactmat
+{
+
+/// A local minimum of the distance from a query point to a curve.
+struct CurveFootpoint
+{
+  double t = 0.0;        ///< curve parameter in [0,1]
+  Vec3 point = Vec3::Zero();
+  double distance = 0.0;
+  bool atEnd = false;    ///< t is 0 or 1 and the minimum is one-sided
+  bool continuum = false; ///< the whole curve is at this distance (query at an arc centre)
+};
+
+/// A local minimum of the distance from a query point to a patch.
+struct PatchFootpoint
+{
+  double u = 0.0, v = 0.0;
+  Vec3 point = Vec3::Zero();
+  double distance = 0.0;
+  bool onBoundary = false; ///< the minimum lies on the patch's boundary (one-sided)
+  bool continuum = false;  ///< a curve or region of the patch is at this distance
+};
+
+constexpr double Unbounded = std::numeric_limits<double>::infinity();
+
+/// Every local minimum of |C(t) − P| on t ∈ [0,1] with distance ≤ maxDistance, including
+/// one-sided minima at the ends; sorted by distance. For a query at the centre of a
+/// circular arc (all points equidistant) a single footpoint with `continuum` is returned.
+std::vector<CurveFootpoint> curveFootpoints(
+  const BezierCurve& curve, const Vec3& query, double maxDistance = Unbounded);
+
+/// The global closest point of the curve (the first of curveFootpoints).
+CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query);
+
+/// Every local minimum of |S(u,v) − P| on [0,1]² with distance ≤ maxDistance, interior
+/// and boundary, sorted by distance.
+std::vector<PatchFootpoint> patchFootpoints(
+  const BezierPatch& patch, const Vec3& query, double maxDistance = Unbounded);
+
+/// The global closest point of the patch.
+PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query);
+
+/// Euclidean distance from a point to an axis-aligned box (0 inside): a lower bound for
+/// the distance to anything inside the box.
+double distanceToBox(const Box3& box, const Vec3& p);
+
+} // namespace exactmat

@@ -1,0 +1,50 @@
+#include "Flatten.h"
+
+namespace exactmat
+{
+
+namespace
+{
+constexpr int MaxDepth = 12;
+
+double chordDeviation(const BezierCurve& c)
+{
+  const Vec3 a = c.startPoint(), b = c.endPoint();
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  double dev = 0.0;
+  for (int i = 1; i < c.degree(); ++i)
+  {
+    const Vec3 p = c.controlPoint(i) - a;
+    const double t = len2 > 0.0 ? p.dot(ab) / len2 : 0.0;
+    dev = std::max(dev, (p - t * ab).norm());
+  }
+  return dev;
+}
+
+void recurse(const BezierCurve& c, double tol, int depth, Vec3List& out)
+{
+  if (depth >= MaxDepth || chordDeviation(c) <= tol)
+  {
+    out.push_back(c.endPoint());
+    return;
+  }
+  BezierCurve l, r;
+  c.split(0.5, l, r);
+  recurse(l, tol, depth + 1, out);
+  recurse(r, tol, depth + 1, out);
+}
+} // namespace
+
+Vec3List flatten(const BezierCurve& curve, double tolerance)
+{
+  Vec3List out{ curve.startPoint() };
+  // Always split once: a closed single curve would otherwise be one degenerate chord.
+  BezierCurve l, r;
+  curve.split(0.5, l, r);
+  recurse(l, tolerance, 1, out);
+  recurse(r, tolerance, 1, out);
+  return out;
+}
+
+} // namespace exactmat

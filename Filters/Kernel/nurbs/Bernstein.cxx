@@ -1,0 +1,454 @@
+#include "Bernstein.h"
+
+#include <algorithm>
+
+namespace exactmat
+{
+
+namespace
+{
+// Pascal's triangle up to the largest degree any product of polynomials here reaches.
+constexpr int BinomialRows = 128;
+struct BinomialTable
+{
+  double c[BinomialRows][BinomialRows] = {};
+  BinomialTable()
+  {
+    for (int n = 0; n < BinomialRows; ++n)
+    {
+      c[n][0] = c[n][n] = 1.0;
+      for (int k = 1; k < n; ++k)
+      {
+        c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
+      }
+    }
+  }
+};
+} // namespace
+
+double binomial(int n, int k)
+{
+  static const BinomialTable table;
+  if (k < 0 || k > n || n >= BinomialRows)
+  {
+    return 0.0;
+  }
+  return table.c[n][k];
+}
+
+void bernsteinWithDerivatives(int p, double t, double* out)
+{
+  // Build the triangle of Bernstein values degree by degree and keep the last three rows:
+  // B' and B'' of degree p are differences of the rows of degree p−1 and p−2.
+  double rows[3][64] = {};
+  double* prev2 = rows[0];
+  double* prev1 = rows[1];
+  double* cur = rows[2];
+  const double s = 1.0 - t;
+  cur[0] = 1.0;
+  for (int k = 1; k <= p; ++k)
+  {
+    std::swap(prev2, prev1);
+    std::swap(prev1, cur);
+    cur[0] = s * prev1[0];
+    for (int i = 1; i < k; ++i)
+    {
+      cur[i] = s * prev1[i] + t * prev1[i - 1];
+    }
+    cur[k] = t * prev1[k - 1];
+  }
+  double* value = out;
+  double* d1 = out + (p + 1);
+  double* d2 = out + 2 * (p + 1);
+  for (int i = 0; i <= p; ++i)
+  {
+    value[i] = cur[i];
+    d1[i] = 0.0;
+    d2[i] = 0.0;
+  }
+  if (p >= 1)
+  {
+    for (int i = 0; i <= p; ++i)
+    {
+      const double a = (i >= 1) ? prev1[i - 1] : 0.0;
+      const double b = (i <= p - 1) ? prev1[i] : 0.0;
+      d1[i] = p * (a - b);
+    }
+  }
+  if (p >= 2)
+  {
+    for (int i = 0; i <= p; ++i)
+    {
+      const double a = (i >= 2) ? prev2[i - 2] : 0.0;
+      const double b = (i >= 1 && i - 1 <= p - 2) ? prev2[i - 1] : 0.0;
+      const double c = (i <= p - 2) ? prev2[i] : 0.0;
+      d2[i] = p * (p - 1) * (a - 2.0 * b + c);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// univariate
+
+double BernsteinPoly::operator()(double t) const
+{
+  std::vector<double> b = c;
+  const int n = degree();
+  for (int r = 1; r <= n; ++r)
+  {
+    for (int i = 0; i <= n - r; ++i)
+    {
+      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+    }
+  }
+  return b.empty() ? 0.0 : b[0];
+}
+
+BernsteinPoly BernsteinPoly::derivative() const
+{
+  const int n = degree();
+  BernsteinPoly d;
+  if (n <= 0)
+  {
+    d.c = { 0.0 };
+    return d;
+  }
+  d.c.resize(n);
+  for (int i = 0; i < n; ++i)
+  {
+    d.c[i] = n * (c[i + 1] - c[i]);
+  }
+  return d;
+}
+
+BernsteinPoly BernsteinPoly::elevatedTo(int m) const
+{
+  const int n = degree();
+  if (m <= n)
+  {
+    return *this;
+  }
+  BernsteinPoly e;
+  e.c.assign(m + 1, 0.0);
+  // Elevation by (m−n) at once: e_k = Σ_i C(n,i)C(m−n,k−i)/C(m,k) c_i.
+  for (int k = 0; k <= m; ++k)
+  {
+    double s = 0.0;
+    for (int i = std::max(0, k - (m - n)); i <= std::min(n, k); ++i)
+    {
+      s += binomial(n, i) * binomial(m - n, k - i) * c[i];
+    }
+    e.c[k] = s / binomial(m, k);
+  }
+  return e;
+}
+
+void BernsteinPoly::split(double t, BernsteinPoly& left, BernsteinPoly& right) const
+{
+  const int n = degree();
+  std::vector<double> b = c;
+  left.c.assign(n + 1, 0.0);
+  right.c.assign(n + 1, 0.0);
+  left.c[0] = b[0];
+  right.c[n] = b[n];
+  for (int r = 1; r <= n; ++r)
+  {
+    for (int i = 0; i <= n - r; ++i)
+    {
+      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+    }
+    left.c[r] = b[0];
+    right.c[n - r] = b[n - r];
+  }
+}
+
+BernsteinPoly BernsteinPoly::restrictedTo(double a, double b) const
+{
+  BernsteinPoly l, r, l2, r2;
+  if (b < 1.0)
+  {
+    split(b, l, r);
+  }
+  else
+  {
+    l = *this;
+  }
+  if (a <= 0.0)
+  {
+    return l;
+  }
+  l.split(a / b, l2, r2);
+  return r2;
+}
+
+int BernsteinPoly::signChanges(double zero) const
+{
+  int changes = 0;
+  int last = 0;
+  for (double v : c)
+  {
+    const int s = (v > zero) ? 1 : ((v < -zero) ? -1 : 0);
+    if (s != 0)
+    {
+      if (last != 0 && s != last)
+      {
+        ++changes;
+      }
+      last = s;
+    }
+  }
+  return changes;
+}
+
+double BernsteinPoly::maxAbs() const
+{
+  double m = 0.0;
+  for (double v : c)
+  {
+    m = std::max(m, std::abs(v));
+  }
+  return m;
+}
+
+BernsteinPoly operator*(const BernsteinPoly& a, const BernsteinPoly& b)
+{
+  const int m = a.degree(), n = b.degree();
+  BernsteinPoly p;
+  p.c.assign(m + n + 1, 0.0);
+  for (int i = 0; i <= m; ++i)
+  {
+    for (int j = 0; j <= n; ++j)
+    {
+      p.c[i + j] += binomial(m, i) * binomial(n, j) * a.c[i] * b.c[j];
+    }
+  }
+  for (int k = 0; k <= m + n; ++k)
+  {
+    p.c[k] /= binomial(m + n, k);
+  }
+  return p;
+}
+
+namespace
+{
+BernsteinPoly combine(const BernsteinPoly& a, const BernsteinPoly& b, double sb)
+{
+  const int n = std::max(a.degree(), b.degree());
+  BernsteinPoly ea = a.elevatedTo(n), eb = b.elevatedTo(n);
+  for (int i = 0; i <= n; ++i)
+  {
+    ea.c[i] += sb * eb.c[i];
+  }
+  return ea;
+}
+} // namespace
+
+BernsteinPoly operator+(const BernsteinPoly& a, const BernsteinPoly& b)
+{
+  return combine(a, b, 1.0);
+}
+
+BernsteinPoly operator-(const BernsteinPoly& a, const BernsteinPoly& b)
+{
+  return combine(a, b, -1.0);
+}
+
+BernsteinPoly operator*(double s, const BernsteinPoly& a)
+{
+  BernsteinPoly r = a;
+  for (double& v : r.c)
+  {
+    v *= s;
+  }
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------
+// tensor product
+
+namespace
+{
+// Applies a univariate operation to every row (fixed i, along v) or column (fixed j, along u).
+template <typename Op>
+BernsteinPoly2 mapColumns(const BernsteinPoly2& a, int newNu, Op op)
+{
+  BernsteinPoly2 r(newNu, a.nv);
+  BernsteinPoly col;
+  col.c.resize(a.nu + 1);
+  for (int j = 0; j <= a.nv; ++j)
+  {
+    for (int i = 0; i <= a.nu; ++i)
+    {
+      col.c[i] = a.at(i, j);
+    }
+    const BernsteinPoly out = op(col);
+    for (int i = 0; i <= newNu; ++i)
+    {
+      r.at(i, j) = out.c[i];
+    }
+  }
+  return r;
+}
+
+template <typename Op>
+BernsteinPoly2 mapRows(const BernsteinPoly2& a, int newNv, Op op)
+{
+  BernsteinPoly2 r(a.nu, newNv);
+  BernsteinPoly row;
+  row.c.resize(a.nv + 1);
+  for (int i = 0; i <= a.nu; ++i)
+  {
+    for (int j = 0; j <= a.nv; ++j)
+    {
+      row.c[j] = a.at(i, j);
+    }
+    const BernsteinPoly out = op(row);
+    for (int j = 0; j <= newNv; ++j)
+    {
+      r.at(i, j) = out.c[j];
+    }
+  }
+  return r;
+}
+} // namespace
+
+double BernsteinPoly2::operator()(double u, double v) const
+{
+  BernsteinPoly col;
+  col.c.resize(nu + 1);
+  BernsteinPoly row;
+  row.c.resize(nv + 1);
+  for (int i = 0; i <= nu; ++i)
+  {
+    for (int j = 0; j <= nv; ++j)
+    {
+      row.c[j] = at(i, j);
+    }
+    col.c[i] = row(v);
+  }
+  return col(u);
+}
+
+BernsteinPoly2 BernsteinPoly2::derivativeU() const
+{
+  if (nu == 0)
+  {
+    return BernsteinPoly2(0, nv);
+  }
+  return mapColumns(*this, nu - 1, [](const BernsteinPoly& p) { return p.derivative(); });
+}
+
+BernsteinPoly2 BernsteinPoly2::derivativeV() const
+{
+  if (nv == 0)
+  {
+    return BernsteinPoly2(nu, 0);
+  }
+  return mapRows(*this, nv - 1, [](const BernsteinPoly& p) { return p.derivative(); });
+}
+
+BernsteinPoly2 BernsteinPoly2::elevatedTo(int mu, int mv) const
+{
+  BernsteinPoly2 r = *this;
+  if (mu > nu)
+  {
+    r = mapColumns(r, mu, [mu](const BernsteinPoly& p) { return p.elevatedTo(mu); });
+  }
+  if (mv > nv)
+  {
+    r = mapRows(r, mv, [mv](const BernsteinPoly& p) { return p.elevatedTo(mv); });
+  }
+  return r;
+}
+
+BernsteinPoly2 BernsteinPoly2::restrictedTo(double u0, double u1, double v0, double v1) const
+{
+  BernsteinPoly2 r =
+    mapColumns(*this, nu, [u0, u1](const BernsteinPoly& p) { return p.restrictedTo(u0, u1); });
+  return mapRows(r, nv, [v0, v1](const BernsteinPoly& p) { return p.restrictedTo(v0, v1); });
+}
+
+bool BernsteinPoly2::hasStrictSign(double zero) const
+{
+  bool allPositive = true, allNegative = true;
+  for (double v : c)
+  {
+    allPositive = allPositive && v > zero;
+    allNegative = allNegative && v < -zero;
+  }
+  return allPositive || allNegative;
+}
+
+double BernsteinPoly2::maxAbs() const
+{
+  double m = 0.0;
+  for (double v : c)
+  {
+    m = std::max(m, std::abs(v));
+  }
+  return m;
+}
+
+BernsteinPoly2 operator*(const BernsteinPoly2& a, const BernsteinPoly2& b)
+{
+  BernsteinPoly2 p(a.nu + b.nu, a.nv + b.nv);
+  for (int i = 0; i <= a.nu; ++i)
+  {
+    for (int j = 0; j <= a.nv; ++j)
+    {
+      const double ca = binomial(a.nu, i) * binomial(a.nv, j) * a.at(i, j);
+      for (int k = 0; k <= b.nu; ++k)
+      {
+        for (int l = 0; l <= b.nv; ++l)
+        {
+          p.at(i + k, j + l) += ca * binomial(b.nu, k) * binomial(b.nv, l) * b.at(k, l);
+        }
+      }
+    }
+  }
+  for (int i = 0; i <= p.nu; ++i)
+  {
+    for (int j = 0; j <= p.nv; ++j)
+    {
+      p.at(i, j) /= binomial(p.nu, i) * binomial(p.nv, j);
+    }
+  }
+  return p;
+}
+
+namespace
+{
+BernsteinPoly2 combine2(const BernsteinPoly2& a, const BernsteinPoly2& b, double sb)
+{
+  const int mu = std::max(a.nu, b.nu), mv = std::max(a.nv, b.nv);
+  BernsteinPoly2 ea = a.elevatedTo(mu, mv);
+  const BernsteinPoly2 eb = b.elevatedTo(mu, mv);
+  for (size_t k = 0; k < ea.c.size(); ++k)
+  {
+    ea.c[k] += sb * eb.c[k];
+  }
+  return ea;
+}
+} // namespace
+
+BernsteinPoly2 operator+(const BernsteinPoly2& a, const BernsteinPoly2& b)
+{
+  return combine2(a, b, 1.0);
+}
+
+BernsteinPoly2 operator-(const BernsteinPoly2& a, const BernsteinPoly2& b)
+{
+  return combine2(a, b, -1.0);
+}
+
+BernsteinPoly2 operator*(double s, const BernsteinPoly2& a)
+{
+  BernsteinPoly2 r = a;
+  for (double& v : r.c)
+  {
+    v *= s;
+  }
+  return r;
+}
+
+} // namespace exactmat

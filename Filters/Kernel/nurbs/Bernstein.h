@@ -1,0 +1,78 @@
+#pragma once
+/// @file Bernstein.h
+/// @brief Polynomials in Bernstein form on [0,1] (univariate and tensor-product).
+///
+/// The closest-point solvers write the stationarity conditions of the squared distance as
+/// polynomials in Bernstein form. Their coefficients bound the polynomial (convex hull
+/// property), so a sub-interval whose coefficients all have one sign holds no root, and one
+/// whose coefficient sequence changes sign exactly once holds exactly one (Descartes' rule
+/// for the Bernstein basis). That turns "find every footpoint" into a bounded subdivision.
+
+#include <cmath>
+#include <vector>
+
+namespace exactmat
+{
+
+/// Binomial coefficient C(n, k) as a double (n ≤ 60 is exact enough for any degree we allow).
+double binomial(int n, int k);
+
+/// Bernstein basis B_{i,p}(t), i = 0..p, and its first and second derivatives.
+/// `out` must hold 3·(p+1) doubles: values, then first, then second derivatives.
+void bernsteinWithDerivatives(int p, double t, double* out);
+
+/// A univariate polynomial Σ c_i B_{i,n}(t), n = c.size() − 1.
+struct BernsteinPoly
+{
+  std::vector<double> c;
+
+  int degree() const { return static_cast<int>(c.size()) - 1; }
+  double operator()(double t) const;
+  BernsteinPoly derivative() const;
+  BernsteinPoly elevatedTo(int n) const;
+  /// The same polynomial re-parameterised over [a,b] ⊂ [0,1] (de Casteljau twice).
+  BernsteinPoly restrictedTo(double a, double b) const;
+  void split(double t, BernsteinPoly& left, BernsteinPoly& right) const;
+  /// Number of sign changes of the coefficient sequence, ignoring coefficients with
+  /// |c| ≤ zero. An upper bound on the number of roots in (0,1), of the same parity.
+  int signChanges(double zero) const;
+  double maxAbs() const;
+};
+
+BernsteinPoly operator*(const BernsteinPoly& a, const BernsteinPoly& b);
+BernsteinPoly operator+(const BernsteinPoly& a, const BernsteinPoly& b);
+BernsteinPoly operator-(const BernsteinPoly& a, const BernsteinPoly& b);
+BernsteinPoly operator*(double s, const BernsteinPoly& a);
+
+/// A tensor-product polynomial Σ c_ij B_{i,nu}(u) B_{j,nv}(v); c[i*(nv+1)+j].
+struct BernsteinPoly2
+{
+  int nu = 0, nv = 0;
+  std::vector<double> c;
+
+  BernsteinPoly2() = default;
+  BernsteinPoly2(int nu_, int nv_)
+    : nu(nu_)
+    , nv(nv_)
+    , c((nu_ + 1) * (nv_ + 1), 0.0)
+  {
+  }
+  double& at(int i, int j) { return c[i * (nv + 1) + j]; }
+  double at(int i, int j) const { return c[i * (nv + 1) + j]; }
+  double operator()(double u, double v) const;
+  BernsteinPoly2 derivativeU() const;
+  BernsteinPoly2 derivativeV() const;
+  BernsteinPoly2 elevatedTo(int mu, int mv) const;
+  /// Re-parameterised over [u0,u1]×[v0,v1] ⊂ [0,1]².
+  BernsteinPoly2 restrictedTo(double u0, double u1, double v0, double v1) const;
+  /// True when every coefficient is > zero or every one is < −zero: no root in the box.
+  bool hasStrictSign(double zero) const;
+  double maxAbs() const;
+};
+
+BernsteinPoly2 operator*(const BernsteinPoly2& a, const BernsteinPoly2& b);
+BernsteinPoly2 operator+(const BernsteinPoly2& a, const BernsteinPoly2& b);
+BernsteinPoly2 operator-(const BernsteinPoly2& a, const BernsteinPoly2& b);
+BernsteinPoly2 operator*(double s, const BernsteinPoly2& a);
+
+} // namespace exactmat

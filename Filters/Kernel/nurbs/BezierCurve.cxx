@@ -1,0 +1,121 @@
+#include "BezierCurve.h"
+
+#include "nurbs/Bernstein.h"
+
+namespace exactmat
+{
+
+BezierCurve::BezierCurve(const Vec3List& points, const std::vector<double>& weights)
+{
+  Points.reserve(points.size());
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    Points.push_back(homogeneous(points[i], weights.empty() ? 1.0 : weights[i]));
+  }
+}
+
+Vec3 BezierCurve::evaluate(double t) const
+{
+  return derivatives(t).point;
+}
+
+CurveDerivatives BezierCurve::derivatives(double t) const
+{
+  const int p = degree();
+  double b[3 * (MaxDegree + 1)];
+  bernsteinWithDerivatives(p, t, b);
+  Vec4 a[3] = { Vec4::Zero(), Vec4::Zero(), Vec4::Zero() };
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i <= p; ++i)
+    {
+      a[k] += b[k * (p + 1) + i] * Points[i];
+    }
+  }
+  CurveDerivatives out;
+  rationalCurveDerivatives(a[0], a[1], a[2], out);
+  return out;
+}
+
+Vec3 BezierCurve::endTangent(bool atEnd) const
+{
+  const int p = degree();
+  const Vec3 base = atEnd ? controlPoint(p) : controlPoint(0);
+  for (int k = 1; k <= p; ++k)
+  {
+    const Vec3 other = atEnd ? controlPoint(p - k) : controlPoint(k);
+    const Vec3 leg = atEnd ? Vec3(base - other) : Vec3(other - base);
+    if (leg.norm() > 1e-14 * (1.0 + base.norm()))
+    {
+      return leg.normalized();
+    }
+  }
+  return Vec3::Zero();
+}
+
+void BezierCurve::split(double t, BezierCurve& left, BezierCurve& right) const
+{
+  const int p = degree();
+  Vec4List b = Points;
+  Vec4List l(p + 1), r(p + 1);
+  l[0] = b[0];
+  r[p] = b[p];
+  for (int k = 1; k <= p; ++k)
+  {
+    for (int i = 0; i <= p - k; ++i)
+    {
+      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+    }
+    l[k] = b[0];
+    r[p - k] = b[p - k];
+  }
+  left = BezierCurve(std::move(l));
+  right = BezierCurve(std::move(r));
+}
+
+BezierCurve BezierCurve::segment(double t0, double t1) const
+{
+  BezierCurve a, b, c, d;
+  if (t1 < 1.0)
+  {
+    split(t1, a, b);
+  }
+  else
+  {
+    a = *this;
+  }
+  if (t0 <= 0.0)
+  {
+    return a;
+  }
+  a.split(t0 / t1, c, d);
+  return d;
+}
+
+BezierCurve BezierCurve::reversed() const
+{
+  return BezierCurve(Vec4List(Points.rbegin(), Points.rend()));
+}
+
+Box3 BezierCurve::boundingBox() const
+{
+  Box3 box;
+  for (const Vec4& h : Points)
+  {
+    box.extend(euclidean(h));
+  }
+  return box;
+}
+
+NurbsCurve BezierCurve::toNurbs() const
+{
+  const int p = degree();
+  KnotVector knots(2 * (p + 1), 0.0);
+  for (int i = p + 1; i < 2 * (p + 1); ++i)
+  {
+    knots[i] = 1.0;
+  }
+  return NurbsCurve(p, knots, Points);
+}
+
+} // namespace exactmat

@@ -1,0 +1,95 @@
+#include "Primitives.h"
+
+#include <cmath>
+
+namespace exactmat
+{
+
+NurbsCurve makeSegment(const Vec3& a, const Vec3& b)
+{
+  return NurbsCurve(1, { 0.0, 0.0, 1.0, 1.0 }, Vec3List{ a, b });
+}
+
+NurbsCurve makeArc(const Vec3& centre, double radius, double a0, double a1)
+{
+  const double sweep = a1 - a0;
+  const int spans = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (M_PI / 2) - 1e-9)));
+  const double step = sweep / spans;
+  const double w1 = std::cos(step / 2.0);
+  Vec3List points;
+  std::vector<double> weights;
+  auto on = [&](double a) {
+    return Vec3(centre.x() + radius * std::cos(a), centre.y() + radius * std::sin(a), centre.z());
+  };
+  KnotVector knots{ 0.0, 0.0, 0.0 };
+  points.push_back(on(a0));
+  weights.push_back(1.0);
+  for (int k = 0; k < spans; ++k)
+  {
+    const double mid = a0 + (k + 0.5) * step;
+    // The middle control point lies on the bisector at distance r / cos(step/2).
+    points.push_back(Vec3(centre.x() + radius / w1 * std::cos(mid),
+      centre.y() + radius / w1 * std::sin(mid), centre.z()));
+    weights.push_back(w1);
+    points.push_back(on(a0 + (k + 1) * step));
+    weights.push_back(1.0);
+    if (k + 1 < spans)
+    {
+      knots.push_back(static_cast<double>(k + 1) / spans);
+      knots.push_back(static_cast<double>(k + 1) / spans);
+    }
+  }
+  knots.insert(knots.end(), { 1.0, 1.0, 1.0 });
+  // Snap the end exactly onto the requested angle for full circles (closing the loop).
+  if (std::abs(std::abs(sweep) - 2 * M_PI) < 1e-12)
+  {
+    points.back() = points.front();
+  }
+  return NurbsCurve(2, knots, points, weights);
+}
+
+std::vector<NurbsCurve> makePolygon(const Vec3List& corners)
+{
+  std::vector<NurbsCurve> edges;
+  for (size_t i = 0; i < corners.size(); ++i)
+  {
+    edges.push_back(makeSegment(corners[i], corners[(i + 1) % corners.size()]));
+  }
+  return edges;
+}
+
+NurbsSurface makeExtrusion(const NurbsCurve& profile, const Vec3& direction, double length)
+{
+  const int n = profile.controlPointCount();
+  Vec4List net;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec4& h = profile.homogeneousPoints()[i];
+    net.push_back(h);
+    Vec4 top = h;
+    top.head<3>() += h.w() * length * direction.normalized();
+    net.push_back(top);
+  }
+  return NurbsSurface(
+    profile.degree(), 1, profile.knots(), { 0.0, 0.0, 1.0, 1.0 }, n, 2, std::move(net));
+}
+
+NurbsSurface makeRevolution(const NurbsCurve& profile)
+{
+  const NurbsCurve circle = makeArc(Vec3::Zero(), 1.0, 0.0, 2.0 * M_PI);
+  const int n = profile.controlPointCount(), m = circle.controlPointCount();
+  Vec4List net;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec3 p = profile.controlPoint(i);
+    const double w = profile.weight(i);
+    for (int j = 0; j < m; ++j)
+    {
+      const Vec3 c = circle.controlPoint(j);
+      net.push_back(homogeneous(Vec3(p.x() * c.x(), p.x() * c.y(), p.z()), w * circle.weight(j)));
+    }
+  }
+  return NurbsSurface(profile.degree(), 2, profile.knots(), circle.knots(), n, m, std::move(net));
+}
+
+} // namespace exactmat

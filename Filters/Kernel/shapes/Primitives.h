@@ -1,0 +1,33 @@
+#pragma once
+/// @file Primitives.h
+/// @brief Exact NURBS building blocks: segments, circular arcs, circles, polygons.
+
+#include "nurbs/NurbsCurve.h"
+#include "nurbs/NurbsSurface.h"
+
+#include <vector>
+
+namespace exactmat
+{
+
+/// The straight segment a→b as a degree-1 curve.
+NurbsCurve makeSegment(const Vec3& a, const Vec3& b);
+
+/// The circular arc in the xy-plane (z = centre.z) from angle a0 to a1 (radians,
+/// counter-clockwise when a1 > a0, clockwise otherwise): rational quadratic, one span per
+/// ≤ 90° (Piegl & Tiller A7.1), so it is exact.
+NurbsCurve makeArc(const Vec3& centre, double radius, double a0, double a1);
+
+/// The closed polygon through `corners` (counter-clockwise for material inside) as
+/// segments.
+std::vector<NurbsCurve> makePolygon(const Vec3List& corners);
+
+/// The tensor-product surface of a curve (u) and a straight extrusion along `direction`
+/// of length `length` (v, degree 1).
+NurbsSurface makeExtrusion(const NurbsCurve& profile, const Vec3& direction, double length);
+
+/// The surface swept by `profile` (in the xz half-plane x > 0) revolving 360° about z: u
+/// follows the profile, v the full circle (rational quadratic, 4 spans).
+NurbsSurface makeRevolution(const NurbsCurve& profile);
+
+} // namespace exactmat

@@ -1,0 +1,255 @@
+// Global closest points and all footpoints, against brute force refined by Newton.
+#include "geometry/ClosestPoint.h"
+#include "nurbs/BezierExtraction.h"
+#include "shapes/Primitives.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace exactmat;
+
+namespace
+{
+constexpr double DistanceTolerance = 1e-10; // absolute, shapes of size ~1–10
+constexpr int BruteForceSamples = 20000;
+
+// Brute force: local minima of the sampled distance, each refined by Newton (kept in [0,1]).
+std::vector<double> bruteForceCurveMinima(const BezierCurve& c, const Vec3& q)
+{
+  std::vector<double> d(BruteForceSamples + 1);
+  for (int i = 0; i <= BruteForceSamples; ++i)
+    d[i] = (c.evaluate(static_cast<double>(i) / BruteForceSamples) - q).norm();
+  std::vector<double> minima;
+  for (int i = 0; i <= BruteForceSamples; ++i)
+  {
+    const bool left = i == 0 || d[i] < d[i - 1];
+    const bool right = i == BruteForceSamples || d[i] <= d[i + 1];
+    if (left && right)
+    {
+      double t = static_cast<double>(i) / BruteForceSamples;
+      for (int it = 0; it < 30; ++it)
+      {
+        const CurveDerivatives e = c.derivatives(t);
+        const Vec3 r = e.point - q;
+        const double f = r.dot(e.d1), fp = e.d1.squaredNorm() + r.dot(e.d2);
+        if (fp <= 0)
+          break;
+        t = std::min(1.0, std::max(0.0, t - f / fp));
+      }
+      minima.push_back((c.evaluate(t) - q).norm());
+    }
+  }
+  std::sort(minima.begin(), minima.end());
+  return minima;
+}
+
+BezierCurve inflectionCubic()
+{
+  return BezierCurve(Vec3List{ Vec3(0, 0, 0), Vec3(1, 3, 0), Vec3(2, -3, 0), Vec3(3, 0, 0) }, {});
+}
+
+BezierCurve rationalQuartic()
+{
+  return BezierCurve(Vec3List{ Vec3(0, 0, 0), Vec3(1, 2, 0), Vec3(2, 2, 1), Vec3(3, -1, 0), Vec3(4, 1, 0) },
+    { 1.0, 2.5, 0.4, 1.7, 1.0 });
+}
+} // namespace
+
+TEST(ClosestPoint, CurveMinimaMatchBruteForce)
+{
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> x(-1, 5), y(-3, 3), z(-0.5, 1.0);
+  const BezierCurve arc = extractBezier(makeArc(Vec3::Zero(), 2.0, 0.0, M_PI / 2)).front().curve;
+  for (const BezierCurve& c : { inflectionCubic(), rationalQuartic(), arc })
+  {
+    for (int trial = 0; trial < 60; ++trial)
+    {
+      const Vec3 q(x(rng), y(rng), z(rng));
+      const auto brute = bruteForceCurveMinima(c, q);
+      const auto fps = curveFootpoints(c, q);
+      ASSERT_EQ(fps.size(), brute.size()) << "query " << q.transpose();
+      for (size_t k = 0; k < fps.size(); ++k)
+      {
+        EXPECT_NEAR(fps[k].distance, brute[k], DistanceTolerance);
+        EXPECT_NEAR((c.evaluate(fps[k].t) - q).norm(), fps[k].distance, 1e-14);
+      }
+      EXPECT_NEAR(closestPoint(c, q).distance, brute.front(), DistanceTolerance);
+    }
+  }
+}
+
+TEST(ClosestPoint, PointsNearTheEvoluteHaveSeveralMinima)
+{
+  // Parabola y = x² on [−1, 1] (a quadratic Bézier). Its evolute cusp is the centre of
+  // curvature (0, 1/2) of the vertex; a point on the axis above it has two symmetric
+  // minima, one below it has one.
+  const BezierCurve parabola(Vec3List{ Vec3(-1, 1, 0), Vec3(0, -1, 0), Vec3(1, 1, 0) }, {});
+  const auto above = curveFootpoints(parabola, Vec3(0, 0.5 + 1e-3, 0));
+  ASSERT_EQ(above.size(), 2u);
+  EXPECT_NEAR(above[0].distance, above[1].distance, 1e-14);
+  EXPECT_NEAR(above[0].point.x(), -above[1].point.x(), 1e-12);
+  // x² = y − 1/2 at the footpoints: x = ±sqrt(1e-3).
+  EXPECT_NEAR(std::abs(above[0].point.x()), std::sqrt(1e-3), 1e-10);
+  const auto below = curveFootpoints(parabola, Vec3(0, 0.5 - 1e-3, 0));
+  ASSERT_EQ(below.size(), 1u);
+  EXPECT_NEAR(below[0].point.x(), 0.0, 1e-12);
+  // Slightly off the axis above the cusp: two minima of different distance.
+  const Vec3 q(1e-4, 0.6, 0);
+  const auto off = curveFootpoints(parabola, q);
+  ASSERT_EQ(off.size(), 2u);
+  const auto brute = bruteForceCurveMinima(parabola, q);
+  ASSERT_EQ(brute.size(), 2u);
+  EXPECT_NEAR(off[0].distance, brute[0], DistanceTolerance);
+  EXPECT_NEAR(off[1].distance, brute[1], DistanceTolerance);
+}
+
+TEST(ClosestPoint, ArcCentreIsAContinuum)
+{
+  const BezierCurve arc = extractBezier(makeArc(Vec3(1, 1, 0), 3.0, 0.2, 1.4)).front().curve;
+  const auto fps = curveFootpoints(arc, Vec3(1, 1, 0));
+  ASSERT_EQ(fps.size(), 1u);
+  EXPECT_TRUE(fps[0].continuum);
+  EXPECT_NEAR(fps[0].distance, 3.0, 1e-13);
+}
+
+TEST(ClosestPoint, WithinDistanceKeepsOnlyNearMinima)
+{
+  const BezierCurve c = inflectionCubic();
+  const Vec3 q(1.0, -0.3, 0.0); // two interior minima
+  const auto all = curveFootpoints(c, q);
+  ASSERT_GE(all.size(), 2u);
+  const double cut = 0.5 * (all[0].distance + all[1].distance);
+  const auto near = curveFootpoints(c, q, cut);
+  EXPECT_EQ(near.size(), 1u);
+  EXPECT_NEAR(near[0].distance, all[0].distance, 1e-15);
+  EXPECT_TRUE(curveFootpoints(c, Vec3(100, 100, 0), 1.0).empty());
+}
+
+namespace
+{
+// Brute force on a patch: interior grid minima refined by Newton (kept when they converge
+// inside), plus the minima of the four boundary curves by the curve brute force above.
+std::vector<double> bruteForcePatchMinima(
+  const BezierPatch& p, const Vec3& q, int n = 200, bool withBoundary = true)
+{
+  std::vector<double> d((n + 1) * (n + 1));
+  auto at = [&](int i, int j) -> double& { return d[i * (n + 1) + j]; };
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      at(i, j) = (p.evaluate(double(i) / n, double(j) / n) - q).norm();
+  std::vector<double> minima;
+  auto addUnique = [&](double dist) {
+    for (double m : minima)
+      if (std::abs(m - dist) < 1e-9)
+        return;
+    minima.push_back(dist);
+  };
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+    {
+      bool isMin = true;
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj)
+        {
+          const int a = i + di, b = j + dj;
+          if ((di || dj) && a >= 0 && a <= n && b >= 0 && b <= n && at(a, b) < at(i, j))
+            isMin = false;
+        }
+      if (!isMin)
+        continue;
+      double u = double(i) / n, v = double(j) / n;
+      bool inside = true;
+      for (int it = 0; it < 50 && inside; ++it)
+      {
+        const SurfaceDerivatives s = p.derivatives(u, v);
+        const Vec3 r = s.point - q;
+        const double fu = r.dot(s.su), fv = r.dot(s.sv);
+        const double a = s.su.squaredNorm() + r.dot(s.suu), b = s.su.dot(s.sv) + r.dot(s.suv),
+                     c = s.sv.squaredNorm() + r.dot(s.svv);
+        const double det = a * c - b * b;
+        u -= (c * fu - b * fv) / det;
+        v -= (a * fv - b * fu) / det;
+        inside = u >= -1e-3 && u <= 1 + 1e-3 && v >= -1e-3 && v <= 1 + 1e-3;
+      }
+      if (inside && u >= 0 && u <= 1 && v >= 0 && v <= 1)
+        addUnique((p.evaluate(u, v) - q).norm());
+    }
+  for (int side = 0; side < 4 && withBoundary; ++side)
+    for (double m : bruteForceCurveMinima(p.side(side), q))
+      addUnique(m);
+  std::sort(minima.begin(), minima.end());
+  return minima;
+}
+
+BezierPatch wavyPatch()
+{
+  Vec4List net;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      net.push_back(homogeneous(Vec3(i, j, (i == 1 || i == 2) && (j == 1 || j == 2) ? 1.5 * ((i + j) % 2 ? 1 : -1) : 0.0),
+        1.0 + 0.5 * ((i * j) % 2)));
+  return BezierPatch(3, 3, net);
+}
+} // namespace
+
+TEST(ClosestPoint, PatchGlobalMinimumMatchesBruteForce)
+{
+  const BezierPatch p = wavyPatch();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> x(-0.5, 3.5), z(-2.0, 2.0);
+  for (int trial = 0; trial < 25; ++trial)
+  {
+    const Vec3 q(x(rng), x(rng), z(rng));
+    const auto brute = bruteForcePatchMinima(p, q, 120);
+    const PatchFootpoint f = closestPoint(p, q);
+    EXPECT_NEAR(f.distance, brute.front(), 1e-9) << q.transpose();
+    EXPECT_NEAR((p.evaluate(f.u, f.v) - q).norm(), f.distance, 1e-14);
+    // No footpoint is closer than the true minimum (each is a point of the patch).
+    for (const PatchFootpoint& g : patchFootpoints(p, q))
+      EXPECT_GE(g.distance, brute.front() - 1e-9);
+  }
+}
+
+TEST(ClosestPoint, PatchFindsEverySphereMinimum)
+{
+  // Inside a sphere patch (octant of radius 2), points near the centre see one minimum on
+  // the patch along the ray; the centre itself is a continuum.
+  const NurbsCurve quarter = makeArc(Vec3::Zero(), 2.0, 0.0, M_PI / 2);
+  Vec4List pts = quarter.homogeneousPoints();
+  for (Vec4& h : pts)
+    h = Vec4(h.x(), 0.0, h.y(), h.w());
+  const NurbsSurface revolved = makeRevolution(NurbsCurve(2, quarter.knots(), pts));
+  const BezierPatch octant = extractBezier(revolved).front().patch;
+  const Vec3 q(0.3, 0.4, 0.5);
+  const auto fps = patchFootpoints(octant, q);
+  ASSERT_GE(fps.size(), 1u);
+  EXPECT_NEAR(fps.front().distance, 2.0 - q.norm(), 1e-12);
+  EXPECT_LT((fps.front().point - 2.0 * q.normalized()).norm(), 1e-9);
+  const auto centre = patchFootpoints(octant, Vec3::Zero());
+  ASSERT_EQ(centre.size(), 1u);
+  EXPECT_TRUE(centre[0].continuum);
+  EXPECT_NEAR(centre[0].distance, 2.0, 1e-13);
+}
+
+TEST(ClosestPoint, PatchFindsEveryInteriorMinimum)
+{
+  // The wavy patch has dips: from above, several interior local minima of the distance.
+  const BezierPatch p = wavyPatch();
+  for (const Vec3& q : { Vec3(1.5, 1.5, 3.0), Vec3(1.0, 2.0, -2.5), Vec3(2.2, 0.9, 1.0) })
+  {
+    const auto brute = bruteForcePatchMinima(p, q, 200, false);
+    std::vector<double> interior;
+    for (const PatchFootpoint& f : patchFootpoints(p, q))
+      interior.push_back(f.distance);
+    // Every brute-force minimum is found by the solver.
+    for (double b : brute)
+    {
+      double nearest = Unbounded;
+      for (double f : interior)
+        nearest = std::min(nearest, std::abs(f - b));
+      EXPECT_LT(nearest, 1e-9) << "missed minimum at distance " << b << " from " << q.transpose();
+    }
+  }
+}
