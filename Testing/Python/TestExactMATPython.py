@@ -1,0 +1,129 @@
+"""The Python package through Debian's /usr/bin/python3: pipelines with vtkmodules, numpy
+checks of the exact geometry, errors as exceptions, defaults equal to the ParaView XML."""
+import os
+import sys
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonCore import reference
+from vtkmodules.vtkCommonDataModel import vtkGenericCell
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+
+import exactmat
+from exactmat import vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
+
+SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+GEOMETRY_TOLERANCE = 1e-12
+
+
+def cell_points(grid, samples=(0.0, 0.25, 0.5, 0.8, 1.0)):
+    """Points of every cell at the given parameters, evaluated by VTK (rational weights)."""
+    cell = vtkGenericCell()
+    out = []
+    for c in range(grid.GetNumberOfCells()):
+        grid.GetCell(c, cell)
+        weights = [0.0] * cell.GetNumberOfPoints()
+        for t in samples:
+            x = [0.0, 0.0, 0.0]
+            cell.EvaluateLocation(reference(0), [t, 0.0, 0.0], x, weights)
+            out.append(x)
+    return np.array(out)
+
+
+class PythonPackage(unittest.TestCase):
+    def test_circle_is_exact_through_vtk_evaluation(self):
+        source = vtkNURBSSource()
+        self.assertTrue(source.SetShapeName("circle"))
+        source.SetRadius(2.0)
+        source.Update()
+        grid = source.GetOutput()
+        self.assertEqual(grid.GetNumberOfCells(), 4)
+        radii = np.linalg.norm(cell_points(grid), axis=1)
+        np.testing.assert_allclose(radii, 2.0, atol=GEOMETRY_TOLERANCE)
+
+    def test_arrays_reach_numpy(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("plate-with-holes")
+        source.Update()
+        grid = source.GetOutput()
+        weights = vtk_to_numpy(grid.GetPointData().GetArray("RationalWeights"))
+        self.assertTrue(np.all(weights > 0))
+        edges = vtk_to_numpy(grid.GetCellData().GetArray("EdgeId"))
+        # 4 sides + 3 holes = 7 NURBS curves.
+        self.assertEqual(len(np.unique(edges)), 7)
+        ranges = vtk_to_numpy(grid.GetCellData().GetArray("ParameterRange"))
+        self.assertTrue(np.all(ranges[:, 1] > ranges[:, 0]))
+
+    def test_composes_with_vtk_xml_io(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            source = vtkNURBSSource()
+            source.SetShapeName("cylinder")
+            writer = vtkXMLUnstructuredGridWriter()
+            writer.SetInputConnection(source.GetOutputPort())
+            writer.SetFileName(os.path.join(tmp, "cyl.vtu"))
+            self.assertEqual(writer.Write(), 1)
+            reader = vtkXMLUnstructuredGridReader()
+            reader.SetFileName(os.path.join(tmp, "cyl.vtu"))
+            reader.Update()
+            a = vtk_to_numpy(source.GetOutput().GetPoints().GetData())
+            b = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+            np.testing.assert_array_equal(a, b)
+
+    def test_json_round_trip(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "blob.json")
+            source = vtkNURBSSource()
+            source.SetShapeName("blob")
+            writer = vtkNURBSWriter()
+            writer.SetInputConnection(source.GetOutputPort())
+            writer.SetFileName(path)
+            self.assertEqual(writer.Write(), 1)
+            reader = vtkNURBSReader()
+            reader.SetFileName(path)
+            reader.Update()
+            np.testing.assert_allclose(cell_points(reader.GetOutput()),
+                                       cell_points(source.GetOutput()), atol=1e-13)
+
+    def test_errors_reach_python(self):
+        source = vtkNURBSSource()
+        errors = exactmat.ErrorObserver().watch(source)
+        source.SetShapeName("annulus")
+        source.SetInnerRadius(3.0)
+        source.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, "innerRadius 3 must be less than radius 1"):
+            errors.check()
+        self.assertEqual(source.GetOutput().GetNumberOfCells(), 0)
+        with tempfile.TemporaryDirectory() as tmp:
+            bad = os.path.join(tmp, "bad.json")
+            with open(bad, "w") as f:
+                f.write('{"curves": [{"degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 0], [1, 0]], "weights": [1, -1]}]}')
+            reader = vtkNURBSReader()
+            errors.watch(reader)
+            reader.SetFileName(bad)
+            reader.Update()
+            with self.assertRaisesRegex(exactmat.ExactMATError, r"curves\[0\]: control point 1 has weight -1"):
+                errors.check()
+
+    def test_defaults_equal_the_paraview_xml(self):
+        xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", "NURBSSource.xml")
+        proxy = ET.parse(xml).getroot().find(".//SourceProxy[@name='NURBSSource']")
+        source = vtkNURBSSource()
+        checked = 0
+        for prop in proxy:
+            if prop.tag in ("DoubleVectorProperty", "IntVectorProperty"):
+                name = prop.get("name")
+                default = float(prop.get("default_values"))
+                self.assertEqual(getattr(source, "Get" + name)(), default, name)
+                checked += 1
+        self.assertEqual(checked, 9)
+        entries = proxy.findall(".//EnumerationDomain/Entry")
+        self.assertEqual(len(entries), vtkNURBSSource.GetNumberOfCatalogueShapes())
+        for entry in entries:
+            self.assertEqual(vtkNURBSSource.GetCatalogueShapeName(int(entry.get("value"))), entry.get("text"))
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
