@@ -1,0 +1,84 @@
+#include "Bisector.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace exactmat
+{
+
+Vec2 Bisector::point(const BisectorState& y) const
+{
+  const GeneratorPoint a = G->evaluate(A, y.sa);
+  return a.p + y.r * a.n;
+}
+
+Vec2 Bisector::residual(const BisectorState& y) const
+{
+  const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
+  return a.p + y.r * a.n - b.p - y.r * b.n;
+}
+
+Eigen::Vector3d Bisector::tangent(const BisectorState& y, int dirA, int dirB) const
+{
+  const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
+  const Vec2 ca = a.dp + y.r * a.dn, cb = -(b.dp + y.r * b.dn), cr = a.n - b.n;
+  const Eigen::Vector3d row0(ca.x(), cb.x(), cr.x()), row1(ca.y(), cb.y(), cr.y());
+  Eigen::Vector3d t = row0.cross(row1);
+  const double n = t.norm();
+  if (!(n > 0.0))
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  t /= n;
+  // Orient by the front that moves most clearly.
+  const double wa = dirA * t(0), wb = dirB * t(1);
+  if ((std::abs(wa) >= std::abs(wb) ? wa : wb) < 0.0)
+  {
+    t = -t;
+  }
+  return t;
+}
+
+double Bisector::motion(const BisectorState& y, const Eigen::Vector3d& t) const
+{
+  const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
+  const Vec2 dx = (a.dp + y.r * a.dn) * t(0) + a.n * t(2);
+  const double m = std::max({ dx.norm(), (a.dp * t(0)).norm(), (b.dp * t(1)).norm(),
+    y.r * (a.dn * t(0)).norm(), y.r * (b.dn * t(1)).norm() });
+  return m;
+}
+
+bool Bisector::correct(BisectorState& y, int fixed, double tolerance) const
+{
+  for (int it = 0; it < 30; ++it)
+  {
+    const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
+    const Vec2 e = a.p + y.r * a.n - b.p - y.r * b.n;
+    if (e.norm() <= tolerance)
+    {
+      return true;
+    }
+    const Vec2 cols[3] = { a.dp + y.r * a.dn, -(b.dp + y.r * b.dn), a.n - b.n };
+    const int i = (fixed == 0) ? 1 : 0, j = (fixed == 2) ? 1 : 2;
+    Eigen::Matrix2d J;
+    J << cols[i].x(), cols[j].x(), cols[i].y(), cols[j].y();
+    const double det = J.determinant();
+    if (!(std::abs(det) > 1e-300))
+    {
+      return false;
+    }
+    const Eigen::Vector2d d = J.inverse() * Eigen::Vector2d(e.x(), e.y());
+    double* v[3] = { &y.sa, &y.sb, &y.r };
+    // Damped update: never leave the parameter range by more than the step asks.
+    *v[i] -= d(0);
+    *v[j] -= d(1);
+    if (!(y.sa > -0.5 && y.sa < 1.5 && y.sb > -0.5 && y.sb < 1.5 && y.r > -1e-9) ||
+      !std::isfinite(y.r))
+    {
+      return false;
+    }
+  }
+  return false;
+}
+
+} // namespace exactmat

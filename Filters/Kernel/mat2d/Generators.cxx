@@ -1,0 +1,189 @@
+#include "Generators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace exactmat
+{
+
+namespace
+{
+Vec2 xy(const Vec3& v)
+{
+  return Vec2(v.x(), v.y());
+}
+
+Vec2 perp(const Vec2& v)
+{
+  return Vec2(-v.y(), v.x());
+}
+
+double angleOf(const Vec2& v)
+{
+  return std::atan2(v.y(), v.x());
+}
+} // namespace
+
+Generators::Generators(const Boundary2D& boundary)
+  : Boundary(&boundary)
+{
+  const auto& edges = boundary.edges();
+  const auto& vertices = boundary.vertices();
+  CornerOfVertex.assign(vertices.size(), -1);
+  GeneratorOfEdge.assign(edges.size(), -1);
+  for (size_t l = 0; l < boundary.loops().size(); ++l)
+  {
+    const Loop2D& loop = boundary.loops()[l];
+    const int first = static_cast<int>(List.size());
+    for (int e : loop.edges)
+    {
+      Generator g;
+      g.kind = GeneratorKind::Edge;
+      g.edge = e;
+      g.loop = static_cast<int>(l);
+      g.entity = edges[e].entity;
+      GeneratorOfEdge[e] = static_cast<int>(List.size());
+      List.push_back(g);
+      const int v = edges[e].endVertex;
+      if (vertices[v].kind == VertexKind::Reflex)
+      {
+        Generator c;
+        c.kind = GeneratorKind::ReflexCorner;
+        c.vertex = v;
+        c.loop = static_cast<int>(l);
+        const Vec2 nIn = xy(edges[e].curve.endTangent(true));
+        c.angle0 = angleOf(perp(nIn));
+        c.sweep = vertices[v].turningAngle; // < 0: the normal turns clockwise
+        CornerOfVertex[v] = static_cast<int>(List.size());
+        List.push_back(c);
+      }
+    }
+    const int count = static_cast<int>(List.size()) - first;
+    for (int k = 0; k < count; ++k)
+    {
+      Generator& g = List[first + k];
+      g.next = first + (k + 1) % count;
+      g.prev = first + (k + count - 1) % count;
+    }
+    // Junctions: between an edge and a corner generator the front moves on (Reflex);
+    // between two edges, the vertex's own kind.
+    for (int k = 0; k < count; ++k)
+    {
+      Generator& g = List[first + k];
+      const Generator& n = List[g.next];
+      if (g.kind == GeneratorKind::ReflexCorner || n.kind == GeneratorKind::ReflexCorner)
+      {
+        g.endJunction = VertexKind::Reflex;
+      }
+      else
+      {
+        g.endJunction = vertices[edges[g.edge].endVertex].kind;
+      }
+      List[g.next].startJunction = g.endJunction;
+    }
+  }
+  std::vector<Box3> boxes;
+  for (const Edge2D& e : edges)
+  {
+    boxes.push_back(e.curve.boundingBox());
+  }
+  Tree.build(boxes);
+  for (size_t g = 0; g < List.size(); ++g)
+  {
+    if (List[g].kind == GeneratorKind::ReflexCorner)
+    {
+      ReflexCorners.push_back(static_cast<int>(g));
+    }
+  }
+}
+
+GeneratorPoint Generators::evaluate(int gi, double s) const
+{
+  const Generator& g = List[gi];
+  GeneratorPoint out;
+  if (g.kind == GeneratorKind::ReflexCorner)
+  {
+    const double a = g.angle0 + s * g.sweep;
+    out.p = xy(Boundary->vertices()[g.vertex].point);
+    out.n = Vec2(std::cos(a), std::sin(a));
+    out.dp = Vec2::Zero();
+    out.dn = g.sweep * perp(out.n);
+    out.curvature = std::numeric_limits<double>::infinity();
+    return out;
+  }
+  const CurveDerivatives d = Boundary->edges()[g.edge].curve.derivatives(s);
+  const Vec2 d1 = xy(d.d1), d2 = xy(d.d2);
+  const double speed = d1.norm();
+  const Vec2 t = d1 / speed;
+  out.p = xy(d.point);
+  out.n = perp(t);
+  out.dp = d1;
+  out.curvature = (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
+  out.dn = -out.curvature * d1; // N' = −κ·C' for the left normal
+  return out;
+}
+
+double Generators::distance(const Vec2& x) const
+{
+  const Vec3 q(x.x(), x.y(), 0.0);
+  const auto& edges = Boundary->edges();
+  double d = 0.0;
+  Tree.nearest(
+    q, [&](int e) { return closestPoint(edges[e].curve, q).distance; }, &d);
+  return d;
+}
+
+std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double radius) const
+{
+  const Vec3 q(x.x(), x.y(), 0.0);
+  const auto& edges = Boundary->edges();
+  const double merge = 1e-9 * size2D();
+  std::vector<BoundaryLocation> out;
+  auto addUnique = [&](const BoundaryLocation& b) {
+    for (BoundaryLocation& o : out)
+    {
+      if ((o.point - b.point).norm() <= merge)
+      {
+        // A corner generator describes a minimum at a reflex vertex better than an
+        // edge's end does (it carries the normal towards x).
+        if (List[b.g].kind == GeneratorKind::ReflexCorner)
+        {
+          o = b;
+        }
+        return;
+      }
+    }
+    out.push_back(b);
+  };
+  for (int c : ReflexCorners)
+  {
+    const Generator& g = List[c];
+    const Vec2 v = xy(Boundary->vertices()[g.vertex].point);
+    const Vec2 d = x - v;
+    if (d.norm() > radius || d.norm() == 0.0)
+    {
+      continue;
+    }
+    // Is the direction to x inside the corner's normal cone?
+    double a = angleOf(d) - g.angle0;
+    a = std::remainder(a, 2.0 * M_PI);
+    const double s = a / g.sweep;
+    if (s >= -1e-9 && s <= 1.0 + 1e-9)
+    {
+      addUnique({ c, std::min(1.0, std::max(0.0, s)), v, d.normalized(), false });
+    }
+  }
+  for (int e : Tree.candidatesWithin(q, radius))
+  {
+    for (const CurveFootpoint& f : curveFootpoints(edges[e].curve, q, radius))
+    {
+      const int g = GeneratorOfEdge[e];
+      const GeneratorPoint gp = evaluate(g, f.t);
+      addUnique({ g, f.t, gp.p, gp.n, f.continuum });
+    }
+  }
+  return out;
+}
+
+} // namespace exactmat

@@ -1,0 +1,840 @@
+#include "Tracer.h"
+
+#include "common/InputError.h"
+#include "mat2d/Bisector.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+namespace exactmat
+{
+
+namespace
+{
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double ParamEps = 1e-12;
+
+struct Pending
+{
+  int node;
+  BoundaryLocation a, b; ///< a moves forward, b backward
+};
+
+/// Parameter intervals of each generator already swept by a front, with an undo log for
+/// the fixed-step mode's backtracking.
+class Coverage
+{
+public:
+  explicit Coverage(int generators)
+    : Intervals(generators)
+  {
+  }
+
+  /// Extends interval `id` of generator g (or starts one when id < 0) to include [lo, hi];
+  /// returns the interval's index.
+  int cover(int g, double lo, double hi, int id)
+  {
+    if (hi < lo)
+      std::swap(lo, hi);
+    auto& list = Intervals[g];
+    if (id >= 0 && id < static_cast<int>(list.size()))
+    {
+      Log.push_back({ g, id, list[id].first, list[id].second, false });
+      list[id].first = std::min(list[id].first, lo);
+      list[id].second = std::max(list[id].second, hi);
+      return id;
+    }
+    list.emplace_back(lo, hi);
+    Log.push_back({ g, static_cast<int>(list.size()) - 1, lo, hi, true });
+    return static_cast<int>(list.size()) - 1;
+  }
+
+  size_t mark() const { return Log.size(); }
+  void undo(size_t to)
+  {
+    while (Log.size() > to)
+    {
+      const Entry e = Log.back();
+      Log.pop_back();
+      if (e.added)
+        Intervals[e.g].pop_back();
+      else
+        Intervals[e.g][e.id] = { e.lo, e.hi };
+    }
+  }
+
+  bool covers(int g, double s, int skip = -1) const
+  {
+    const auto& list = Intervals[g];
+    for (int i = 0; i < static_cast<int>(list.size()); ++i)
+    {
+      if (i != skip && list[i].first <= s && s <= list[i].second)
+        return true;
+    }
+    return false;
+  }
+
+  /// First covered parameter met moving from s (exclusive) to target in direction dir,
+  /// ignoring interval `skip`; NaN when none.
+  double firstAhead(int g, double s, double target, int dir, int skip) const
+  {
+    double best = NaN;
+    const auto& list = Intervals[g];
+    for (int i = 0; i < static_cast<int>(list.size()); ++i)
+    {
+      if (i == skip)
+        continue;
+      const double edge = dir > 0 ? list[i].first : list[i].second;
+      const bool inside = list[i].first < s && s < list[i].second;
+      const double hit = inside ? s : edge;
+      const bool ahead = dir > 0 ? (hit >= s - ParamEps && hit <= target)
+                                 : (hit <= s + ParamEps && hit >= target);
+      if (ahead && (std::isnan(best) || (dir > 0 ? hit < best : hit > best)))
+        best = hit;
+    }
+    return best;
+  }
+
+  double coveredMeasure() const
+  {
+    double total = 0.0;
+    for (const auto& list : Intervals)
+    {
+      std::vector<std::pair<double, double>> v = list;
+      std::sort(v.begin(), v.end());
+      double end = -1.0;
+      for (const auto& [lo, hi] : v)
+      {
+        total += std::max(0.0, hi - std::max(lo, end));
+        end = std::max(end, hi);
+      }
+    }
+    return total;
+  }
+
+  /// A parameter of g not covered (the middle of the largest gap), or NaN.
+  double uncovered(int g) const
+  {
+    std::vector<std::pair<double, double>> v = Intervals[g];
+    std::sort(v.begin(), v.end());
+    double end = 0.0, bestLen = 1e-6, best = NaN;
+    for (const auto& [lo, hi] : v)
+    {
+      if (lo - end > bestLen)
+      {
+        bestLen = lo - end;
+        best = 0.5 * (lo + end);
+      }
+      end = std::max(end, hi);
+    }
+    if (1.0 - end > bestLen)
+      best = 0.5 * (1.0 + end);
+    return best;
+  }
+
+private:
+  struct Entry
+  {
+    int g, id;
+    double lo, hi;
+    bool added;
+  };
+  std::vector<std::vector<std::pair<double, double>>> Intervals;
+  std::vector<Entry> Log;
+};
+
+class Tracer
+{
+public:
+  Tracer(const Generators& g, const MAT2DOptions& o)
+    : G(g)
+    , O(o)
+    , L(g.size2D())
+    , Cover(g.size())
+  {
+  }
+
+  MedialGraph run();
+
+private:
+  struct Front
+  {
+    int g;
+    double s;
+    int interval = -1; // coverage interval this front is growing
+  };
+
+  int addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps);
+  int findNode(const Vec2& x, double tol) const;
+  void spawnWedges(int node);
+  void trace(const Pending& p);
+  bool emptyDisk(const Vec2& x, double r) const;
+  bool curvatureOk(int g, double s, double r) const;
+  void startAt(int g, double s);
+  BoundaryLocation location(int g, double s) const;
+  // The LMPC between the fronts when they close in on each other along one smooth run.
+  using Stretch = std::vector<std::pair<int, std::pair<double, double>>>;
+  bool lmpcBetween(const Front& a, const Front& b, BoundaryLocation& at, double& kappa,
+    Stretch& stretch) const;
+  /// Continuum footpoints (an arc seen from its centre) are touched all along: cover
+  /// their generators and make the node an end at a centre of curvature.
+  void absorbContinuum(int node);
+  void reportProgress();
+  /// The boundary location `distance` (in parameter) ahead of (g, s) in direction dir,
+  /// crossing smooth and reflex junctions; false when a convex vertex is in the way.
+  bool stepAlong(int& g, double& s, int dir, double distance) const;
+  bool coveredAhead(int g, double s, int dir) const;
+  /// A front at the end of its generator continues on the neighbour (not past a convex
+  /// vertex), so equal places on the boundary have one description.
+  BoundaryLocation normalised(const BoundaryLocation& f, int dir) const;
+
+  const Generators& G;
+  const MAT2DOptions& O;
+  const double L;
+  Coverage Cover;
+  MedialGraph Graph;
+  std::deque<Pending> Queue;
+  double TotalMeasure = 1.0;
+};
+
+BoundaryLocation Tracer::location(int g, double s) const
+{
+  const GeneratorPoint p = G.evaluate(g, s);
+  return { g, s, p.p, p.n, false };
+}
+
+bool Tracer::emptyDisk(const Vec2& x, double r) const
+{
+  return G.distance(x) >= r - (1e-10 * L + 1e-9 * r);
+}
+
+bool Tracer::curvatureOk(int g, double s, double r) const
+{
+  if (G[g].kind != GeneratorKind::Edge)
+    return true;
+  const double k = G.evaluate(g, s).curvature;
+  return !(k > 0.0) || r * k <= 1.0 + 1e-9;
+}
+
+int Tracer::findNode(const Vec2& x, double tol) const
+{
+  for (size_t i = 0; i < Graph.nodes.size(); ++i)
+  {
+    if ((Graph.nodes[i].sample.x - x).norm() <= tol)
+      return static_cast<int>(i);
+  }
+  return -1;
+}
+
+int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps)
+{
+  MedialNode n;
+  n.sample.x = x;
+  n.sample.radius = r;
+  if (!fps.empty())
+  {
+    n.sample.foot[0] = fps.front();
+    n.sample.foot[1] = fps.size() > 1 ? fps[1] : fps.front();
+  }
+  n.type = type;
+  n.footpoints = std::move(fps);
+  Graph.nodes.push_back(std::move(n));
+  return static_cast<int>(Graph.nodes.size()) - 1;
+}
+
+bool Tracer::stepAlong(int& g, double& s, int dir, double distance) const
+{
+  s += dir * distance;
+  if (s > 1.0)
+  {
+    if (G[g].endJunction == VertexKind::Convex)
+      return false;
+    s -= 1.0;
+    g = G[g].next;
+  }
+  else if (s < 0.0)
+  {
+    if (G[g].startJunction == VertexKind::Convex)
+      return false;
+    s += 1.0;
+    g = G[g].prev;
+  }
+  return true;
+}
+
+bool Tracer::coveredAhead(int g, double s, int dir) const
+{
+  // Further than the slop of a bisection, closer than any real feature.
+  return stepAlong(g, s, dir, 1e-6) && Cover.covers(g, s);
+}
+
+BoundaryLocation Tracer::normalised(const BoundaryLocation& f, int dir) const
+{
+  if (dir > 0 && f.s >= 1.0 - ParamEps && G[f.g].endJunction != VertexKind::Convex)
+    return location(G[f.g].next, 0.0);
+  if (dir < 0 && f.s <= ParamEps && G[f.g].startJunction != VertexKind::Convex)
+    return location(G[f.g].prev, 1.0);
+  return f;
+}
+
+void Tracer::absorbContinuum(int node)
+{
+  MedialNode& n = Graph.nodes[node];
+  bool any = false;
+  for (const BoundaryLocation& f : n.footpoints)
+  {
+    if (f.continuum)
+    {
+      Cover.cover(f.g, 0.0, 1.0, -1);
+      any = true;
+    }
+  }
+  if (any && n.type != MedialPointType::CircleCentre)
+    n.type = MedialPointType::CurvatureCentreEnd;
+}
+
+void Tracer::spawnWedges(int node)
+{
+  absorbContinuum(node);
+  // One new segment per pair of angularly consecutive footpoints (counter-clockwise around
+  // the MAT point: moving forward along the boundary turns the contact point that way).
+  MedialNode& n = Graph.nodes[node];
+  std::vector<BoundaryLocation> f = n.footpoints;
+  const Vec2 x = n.sample.x;
+  std::sort(f.begin(), f.end(), [&](const BoundaryLocation& a, const BoundaryLocation& b) {
+    const Vec2 da = a.point - x, db = b.point - x;
+    const double aa = (da.norm() > 0 ? std::atan2(da.y(), da.x()) : std::atan2(-a.normal.y(), -a.normal.x()));
+    const double ab = (db.norm() > 0 ? std::atan2(db.y(), db.x()) : std::atan2(-b.normal.y(), -b.normal.x()));
+    return aa < ab;
+  });
+  for (size_t i = 0; i < f.size(); ++i)
+  {
+    const BoundaryLocation a = normalised(f[i], +1);
+    const BoundaryLocation b = normalised(f[(i + 1) % f.size()], -1);
+    const bool aCovered = coveredAhead(a.g, a.s, +1);
+    const bool bCovered = coveredAhead(b.g, b.s, -1);
+    if (std::getenv("EXACTMAT_DEBUG"))
+      std::fprintf(stderr, "wedge at node %d: a=(%d,%.6f) b=(%d,%.6f) covered %d %d\n", node, a.g, a.s, b.g, b.s, aCovered, bCovered);
+    if (aCovered || bCovered)
+      continue;
+    Queue.push_back({ node, a, b });
+  }
+}
+
+bool Tracer::lmpcBetween(
+  const Front& a, const Front& b, BoundaryLocation& at, double& kappa, Stretch& stretch) const
+{
+  // The stretch of boundary between the fronts: [a.s, b.s] on one edge, or a run of
+  // edges joined smoothly. Long runs are only searched when the MAT point already sits at
+  // both footpoints' centres of curvature (a circular arc seen from its centre).
+  stretch.clear();
+  if (a.g == b.g && a.s <= b.s + ParamEps)
+    stretch.push_back({ a.g, { a.s, b.s } });
+  else
+  {
+    bool concentric = false;
+    if (G[a.g].kind == GeneratorKind::Edge && G[b.g].kind == GeneratorKind::Edge)
+    {
+      const GeneratorPoint pa = G.evaluate(a.g, a.s), pb = G.evaluate(b.g, b.s);
+      if (pa.curvature > 0.0 && pb.curvature > 0.0)
+      {
+        const Vec2 ca = pa.p + pa.n / pa.curvature, cb = pb.p + pb.n / pb.curvature;
+        concentric = (ca - cb).norm() <= 1e-9 * L;
+      }
+    }
+    if (G[a.g].next != b.g && !concentric)
+      return false;
+    int g = a.g;
+    stretch.push_back({ g, { a.s, 1.0 } });
+    for (int k = 0; k < 256 && g != b.g; ++k)
+    {
+      if (G[g].endJunction != VertexKind::Smooth)
+        return false;
+      g = G[g].next;
+      stretch.push_back({ g, { 0.0, g == b.g ? b.s : 1.0 } });
+    }
+    if (g != b.g)
+      return false;
+  }
+  kappa = -1.0;
+  for (const auto& [g, range] : stretch)
+  {
+    if (G[g].kind != GeneratorKind::Edge)
+      return false;
+    const double lo = range.first, hi = std::max(range.first, range.second);
+    // Sample, then refine the best sample by golden-section search.
+    const int n = 32;
+    double bestS = lo, bestK = -1e300;
+    for (int k = 0; k <= n; ++k)
+    {
+      const double s = lo + (hi - lo) * k / n;
+      const double c = G.evaluate(g, s).curvature;
+      if (c > bestK)
+      {
+        bestK = c;
+        bestS = s;
+      }
+    }
+    double l = std::max(lo, bestS - (hi - lo) / n), h = std::min(hi, bestS + (hi - lo) / n);
+    const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int it = 0; it < 60 && h - l > 1e-15; ++it)
+    {
+      const double m1 = h - phi * (h - l), m2 = l + phi * (h - l);
+      if (G.evaluate(g, m1).curvature < G.evaluate(g, m2).curvature)
+        l = m1;
+      else
+        h = m2;
+    }
+    const double s = 0.5 * (l + h);
+    const double c = G.evaluate(g, s).curvature;
+    if (c > kappa)
+    {
+      kappa = c;
+      at = location(g, s);
+    }
+  }
+  return kappa > 0.0;
+}
+
+void Tracer::trace(const Pending& p)
+{
+  MedialSegment seg;
+  seg.startNode = p.node;
+  seg.generators[0] = p.a.g;
+  seg.generators[1] = p.b.g;
+  const MedialNode& start = Graph.nodes[p.node];
+  Front a{ p.a.g, p.a.s }, b{ p.b.g, p.b.s };
+  BisectorState y{ a.s, b.s, start.sample.radius };
+  auto sampleOf = [&](const Vec2& x, double r) {
+    MedialSample s;
+    s.x = x;
+    s.radius = r;
+    s.foot[0] = location(a.g, a.s);
+    s.foot[1] = location(b.g, b.s);
+    return s;
+  };
+  seg.samples.push_back(sampleOf(start.sample.x, y.r));
+
+  const double tolerance = O.tolerance * L;
+  double h = O.fixedStep ? O.step * L : std::max(1e-6 * L, std::min(0.02 * L, 10.0 * tolerance));
+  const int checkEvery = O.fixedStep ? std::max(1, static_cast<int>(std::lround(O.branchCheckStep / O.step))) : 1;
+  int sinceCheck = 0;
+  bool checkEveryStep = !O.fixedStep;
+  // Checkpoint for the fixed-step mode's backtracking to the last checked point.
+  struct Checkpoint
+  {
+    Front a, b;
+    BisectorState y;
+    size_t samples, coverage;
+  } good{ a, b, y, seg.samples.size(), Cover.mark() };
+
+  // Whether each front has moved off its starting place (see the sliver rule below).
+  bool aLeftStart = false, bLeftStart = false;
+  int endNode = -1;
+  auto finish = [&](int node) {
+    endNode = node;
+  };
+
+  for (int iteration = 0; endNode < 0; ++iteration)
+  {
+    if (iteration > O.maxSamplesPerSegment)
+    {
+      fail("2D MAT: tracing the segment of generators ", a.g, " and ", b.g,
+        " did not end within ", O.maxSamplesPerSegment, " steps (near ",
+        seg.samples.back().x.transpose(), ")");
+    }
+    // Fronts at the end of their generator move on, or stop at a convex vertex.
+    if (a.s >= 1.0 - ParamEps)
+    {
+      if (G[a.g].endJunction == VertexKind::Convex)
+      {
+        const Vec2 v = G.evaluate(a.g, 1.0).p;
+        const int id = findNode(v, 1e-9 * L);
+        finish(id >= 0 ? id : addNode(v, 0.0, MedialPointType::ConvexVertexEnd, { location(a.g, 1.0) }));
+        seg.samples.push_back(sampleOf(v, 0.0));
+        Cover.cover(b.g, 0.0, b.s, b.interval);
+        break;
+      }
+      a = Front{ G[a.g].next, 0.0 };
+      y.sa = 0.0;
+    }
+    if (b.s <= ParamEps)
+    {
+      if (G[b.g].startJunction == VertexKind::Convex)
+      {
+        const Vec2 v = G.evaluate(b.g, 0.0).p;
+        const int id = findNode(v, 1e-9 * L);
+        finish(id >= 0 ? id : addNode(v, 0.0, MedialPointType::ConvexVertexEnd, { location(b.g, 0.0) }));
+        seg.samples.push_back(sampleOf(v, 0.0));
+        Cover.cover(a.g, a.s, 1.0, a.interval);
+        break;
+      }
+      b = Front{ G[b.g].prev, 1.0 };
+      y.sb = 1.0;
+    }
+    const Bisector B(G, a.g, b.g);
+    const Vec2 x0 = B.point(y);
+
+    // Closing in on a point of locally maximal positive curvature: end at its centre.
+    BoundaryLocation lmpc;
+    double kappa = 0.0;
+    Stretch stretch;
+    const bool closing = lmpcBetween(a, b, lmpc, kappa, stretch);
+    const Vec2 centre = closing ? Vec2(lmpc.point + lmpc.normal / kappa) : Vec2::Zero();
+    auto endAtCentre = [&]() {
+      const int id = findNode(centre, 1e-9 * L);
+      finish(id >= 0 ? id
+                     : addNode(centre, 1.0 / kappa, MedialPointType::CurvatureCentreEnd, { lmpc }));
+      MedialSample s = sampleOf(centre, 1.0 / kappa);
+      s.foot[0] = s.foot[1] = lmpc;
+      seg.samples.push_back(s);
+      for (const auto& [g, range] : stretch)
+        Cover.cover(g, range.first, range.second, g == a.g ? a.interval : (g == b.g ? b.interval : -1));
+    };
+    if (closing && (x0 - centre).norm() <= std::max(h, 1e-9 * L))
+    {
+      endAtCentre();
+      break;
+    }
+
+    const Eigen::Vector3d t = B.tangent(y, +1, -1);
+    const double m = B.motion(y, t);
+    if (!(m > 0.0) || t.isZero())
+    {
+      if (closing)
+      {
+        endAtCentre();
+        break;
+      }
+      fail("2D MAT: the bisector of generators ", a.g, " and ", b.g, " is singular at (",
+        x0.transpose(), ")");
+    }
+
+    bool accepted = false;
+    for (int attempt = 0; attempt < 60 && !accepted; ++attempt)
+    {
+      Eigen::Vector3d dy = t * (h / m);
+      // Land exactly on a generator's end, or on boundary another front already swept.
+      double lambda = 1.0;
+      int fixed = -1;
+      double fixedValue = 0.0;
+      if (dy(0) > 0.0 && a.s + dy(0) > 1.0)
+      {
+        lambda = (1.0 - a.s) / dy(0);
+        fixed = 0;
+        fixedValue = 1.0;
+      }
+      if (dy(1) < 0.0 && b.s + dy(1) < 0.0 && -b.s / dy(1) < lambda)
+      {
+        lambda = -b.s / dy(1);
+        fixed = 1;
+        fixedValue = 0.0;
+      }
+      double hitA = Cover.firstAhead(a.g, a.s, a.s + lambda * dy(0), +1, a.interval);
+      double hitB = Cover.firstAhead(b.g, b.s, b.s + lambda * dy(1), -1, b.interval);
+      // Slivers left by the bisection that found this segment's start node are not
+      // boundary traced before.
+      if (!aLeftStart && a.g == p.a.g && std::abs(hitA - p.a.s) < 1e-6)
+        hitA = NaN;
+      if (!bLeftStart && b.g == p.b.g && std::abs(hitB - p.b.s) < 1e-6)
+        hitB = NaN;
+      bool joining = false;
+      if (!std::isnan(hitA) && dy(0) > 0.0)
+      {
+        lambda = std::max(0.0, (hitA - a.s) / dy(0));
+        fixed = 0;
+        fixedValue = hitA;
+        joining = true;
+      }
+      if (!std::isnan(hitB) && dy(1) < 0.0 && (hitB - b.s) / dy(1) <= lambda)
+      {
+        lambda = std::max(0.0, (hitB - b.s) / dy(1));
+        fixed = 1;
+        fixedValue = hitB;
+        joining = true;
+      }
+      BisectorState y1{ y.sa + lambda * dy(0), y.sb + lambda * dy(1), y.r + lambda * dy(2) };
+      if (fixed < 0)
+      {
+        // Hold the unknown that moves most, measured by its effect on the geometry.
+        const GeneratorPoint ga = G.evaluate(a.g, y.sa), gb = G.evaluate(b.g, y.sb);
+        const double w[3] = { std::abs(t(0)) * (ga.dp.norm() + y.r * ga.dn.norm()),
+          std::abs(t(1)) * (gb.dp.norm() + y.r * gb.dn.norm()), std::abs(t(2)) };
+        fixed = static_cast<int>(std::max_element(w, w + 3) - w);
+      }
+      else
+      {
+        (fixed == 0 ? y1.sa : y1.sb) = fixedValue;
+      }
+      const double solveTol = 1e-13 * L;
+      bool ok = B.correct(y1, fixed, solveTol) && y1.sa >= a.s - 1e-9 && y1.sb <= b.s + 1e-9 &&
+        y1.r >= 0.0;
+      if (ok && closing)
+      {
+        // Do not step past the LMPC: the segment ends at its centre.
+        const bool pastA = (lmpc.g == a.g && y1.sa > lmpc.s + 1e-12);
+        const bool pastB = (lmpc.g == b.g && y1.sb < lmpc.s - 1e-12);
+        if (pastA || pastB)
+          ok = false;
+      }
+      Vec2 x1 = ok ? B.point(y1) : Vec2::Zero();
+      if (ok && !O.fixedStep && !joining)
+      {
+        // Chord error: the true MAT point halfway against the chord's midpoint.
+        BisectorState ym{ 0.5 * (y.sa + y1.sa), 0.5 * (y.sb + y1.sb), 0.5 * (y.r + y1.r) };
+        const int mid = fixed;
+        if (B.correct(ym, mid, solveTol))
+        {
+          const double err = (B.point(ym) - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
+          if (err > tolerance)
+            ok = false;
+        }
+        else
+          ok = false;
+      }
+      if (!ok)
+      {
+        h *= 0.5;
+        if (h < 1e-14 * L)
+        {
+          if (closing)
+          {
+            endAtCentre();
+            accepted = true;
+            break;
+          }
+          fail("2D MAT: cannot continue the segment of generators ", a.g, " and ", b.g,
+            " at (", x0.transpose(), "), radius ", y.r);
+        }
+        continue;
+      }
+      // The step is geometrically sound; is the point on the MAT?
+      ++sinceCheck;
+      const bool check = checkEveryStep || sinceCheck >= checkEvery || joining;
+      const bool valid = curvatureOk(a.g, y1.sa, y1.r) && curvatureOk(b.g, y1.sb, y1.r) &&
+        (!check || emptyDisk(x1, y1.r));
+      if (!valid)
+      {
+        if (!checkEveryStep)
+        {
+          // Fixed-step mode overshot somewhere since the last check: go back and check
+          // every step from there.
+          a = good.a;
+          b = good.b;
+          y = good.y;
+          seg.samples.resize(good.samples);
+          Cover.undo(good.coverage);
+          checkEveryStep = true;
+          accepted = true; // restart the outer loop from the checkpoint
+          break;
+        }
+        // Bisection between the last valid point (y) and this one for the branch point.
+        double lo = 0.0, hi = 1.0;
+        BisectorState yb = y;
+        for (int it = 0; it < 60; ++it)
+        {
+          const double mid = 0.5 * (lo + hi);
+          BisectorState ym{ y.sa + mid * (y1.sa - y.sa), y.sb + mid * (y1.sb - y.sb), y.r + mid * (y1.r - y.r) };
+          if (!B.correct(ym, fixed == 2 ? 2 : fixed, solveTol))
+          {
+            hi = mid;
+            continue;
+          }
+          const Vec2 xm = B.point(ym);
+          if (curvatureOk(a.g, ym.sa, ym.r) && curvatureOk(b.g, ym.sb, ym.r) && emptyDisk(xm, ym.r))
+          {
+            lo = mid;
+            yb = ym;
+          }
+          else
+            hi = mid;
+          if ((hi - lo) * (x1 - x0).norm() < 1e-13 * L)
+            break;
+        }
+        const Vec2 xb = B.point(yb);
+        a.s = yb.sa;
+        b.s = yb.sb;
+        a.interval = Cover.cover(a.g, y.sa, yb.sa, a.interval);
+        b.interval = Cover.cover(b.g, yb.sb, y.sb, b.interval);
+        y = yb;
+        seg.samples.push_back(sampleOf(xb, yb.r));
+        const double reach = yb.r * (1.0 + 1e-7) + 1e-9 * L;
+        std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, reach);
+        int id = findNode(xb, 1e-7 * L);
+        if (id < 0)
+        {
+          id = addNode(xb, yb.r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps);
+          finish(id);
+          spawnWedges(id);
+        }
+        else
+          finish(id);
+        accepted = true;
+        break;
+      }
+      // Accept the step.
+      a.interval = Cover.cover(a.g, a.s, y1.sa, a.interval);
+      b.interval = Cover.cover(b.g, y1.sb, b.s, b.interval);
+      a.s = y1.sa;
+      b.s = y1.sb;
+      y = y1;
+      aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 1e-5;
+      bLeftStart = bLeftStart || b.g != p.b.g || std::abs(b.s - p.b.s) > 1e-5;
+      seg.samples.push_back(sampleOf(x1, y1.r));
+      if (check)
+      {
+        sinceCheck = 0;
+        good = Checkpoint{ a, b, y, seg.samples.size(), Cover.mark() };
+      }
+      if (joining)
+      {
+        // Reached boundary traced before: this point is a node of the graph already.
+        const int id = findNode(x1, 1e-6 * L);
+        if (id < 0)
+        {
+          fail("2D MAT: the segment of generators ", a.g, " and ", b.g, " reached traced boundary at (",
+            x1.transpose(), ") where no MAT node is");
+        }
+        seg.samples.back().x = Graph.nodes[id].sample.x;
+        finish(id);
+      }
+      accepted = true;
+      if (!O.fixedStep)
+        h = std::min(0.05 * L, h * 1.6);
+    }
+    if (!accepted)
+    {
+      fail("2D MAT: no step could be taken on the segment of generators ", a.g, " and ", b.g,
+        " at (", x0.transpose(), ")");
+    }
+  }
+  seg.endNode = endNode;
+  Graph.segments.push_back(std::move(seg));
+  const int sid = static_cast<int>(Graph.segments.size()) - 1;
+  Graph.nodes[Graph.segments.back().startNode].segments.push_back(sid);
+  Graph.nodes[endNode].segments.push_back(sid);
+  if (static_cast<int>(Graph.segments.size()) > O.maxSegments)
+  {
+    fail("2D MAT: more than ", O.maxSegments, " segments; giving up");
+  }
+  reportProgress();
+}
+
+void Tracer::startAt(int g, double s)
+{
+  // Shrinking ball (Ma, Bae & Choi): the maximal disk touching the boundary at p.
+  const GeneratorPoint p = G.evaluate(g, s);
+  double r = L;
+  Vec2 x = p.p + r * p.n;
+  for (int it = 0; it < 200; ++it)
+  {
+    x = p.p + r * p.n;
+    const auto near = G.footpointsWithin(x, G.distance(x) * (1.0 + 1e-12) + 1e-12 * L);
+    const BoundaryLocation* q = nullptr;
+    for (const BoundaryLocation& f : near)
+    {
+      if ((f.point - p.p).norm() > 1e-9 * L)
+      {
+        q = &f;
+        break;
+      }
+    }
+    if (!q)
+      break; // only p itself is closest: the disk is maximal
+    const Vec2 d = q->point - p.p;
+    const double denominator = 2.0 * d.dot(p.n);
+    if (!(denominator > 0.0))
+      break;
+    const double next = d.squaredNorm() / denominator;
+    if (std::abs(next - r) <= 1e-15 * L)
+    {
+      r = next;
+      break;
+    }
+    r = next;
+  }
+  x = p.p + r * p.n;
+  std::vector<BoundaryLocation> fps = G.footpointsWithin(x, r * (1.0 + 1e-7) + 1e-9 * L);
+  const bool circle = std::all_of(fps.begin(), fps.end(), [](const BoundaryLocation& f) { return f.continuum; });
+  if (circle && !fps.empty())
+  {
+    // A circular domain: its MAT is the centre.
+    const int id = addNode(x, r, MedialPointType::CircleCentre, fps);
+    (void)id;
+    for (const BoundaryLocation& f : fps)
+      Cover.cover(f.g, 0.0, 1.0, -1);
+    return;
+  }
+  const int id = addNode(x, r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::CycleJoint, fps);
+  spawnWedges(id);
+}
+
+void Tracer::reportProgress()
+{
+  if (O.progress)
+    O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
+}
+
+MedialGraph Tracer::run()
+{
+  TotalMeasure = std::max(1.0, static_cast<double>(G.size()));
+  // Convex vertices: both footpoints known (the vertex itself), radius 0 (§4.3.1).
+  for (int g = 0; g < G.size(); ++g)
+  {
+    if (G[g].kind == GeneratorKind::Edge && G[g].endJunction == VertexKind::Convex)
+    {
+      const int next = G[g].next;
+      const Vec2 v = G.evaluate(g, 1.0).p;
+      const int id = addNode(v, 0.0, MedialPointType::ConvexVertexEnd, { location(next, 0.0), location(g, 1.0) });
+      Queue.push_back({ id, location(next, 0.0), location(g, 1.0) });
+    }
+  }
+  // Trace until every generator is covered; without convex vertices (circle, annulus,
+  // smooth blobs) start from the maximal disk at an uncovered boundary point.
+  for (int round = 0; round < G.size() + 1; ++round)
+  {
+    while (!Queue.empty())
+    {
+      const Pending p = Queue.front();
+      Queue.pop_front();
+      if (coveredAhead(p.a.g, p.a.s, +1) || coveredAhead(p.b.g, p.b.s, -1))
+        continue;
+      trace(p);
+    }
+    int g = -1;
+    double s = NaN;
+    for (int k = 0; k < G.size() && g < 0; ++k)
+    {
+      if (G[k].kind != GeneratorKind::Edge)
+        continue;
+      const double u = Cover.uncovered(k);
+      if (!std::isnan(u))
+      {
+        g = k;
+        s = u;
+      }
+    }
+    if (g < 0)
+      break;
+    startAt(g, s);
+    if (Queue.empty() && Graph.nodes.back().type != MedialPointType::CircleCentre)
+    {
+      fail("2D MAT: no segment could be started from boundary generator ", g);
+    }
+  }
+  reportProgress();
+  return std::move(Graph);
+}
+} // namespace
+
+MedialGraph computeMAT2D(const Generators& generators, const MAT2DOptions& options)
+{
+  Tracer t(generators, options);
+  return t.run();
+}
+
+} // namespace exactmat
