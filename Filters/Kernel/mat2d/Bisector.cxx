@@ -82,3 +82,44 @@ bool Bisector::correct(BisectorState& y, int fixed, double tolerance) const
 }
 
 } // namespace exactmat
+
+namespace exactmat
+{
+
+bool polishBranchPoint(const Generators& G, int ga, int gb, int gc, double& sa, double& sb,
+  double& sc, double& r, double tolerance)
+{
+  Eigen::Vector4d y(sa, sb, sc, r);
+  for (int it = 0; it < 30; ++it)
+  {
+    const GeneratorPoint a = G.evaluate(ga, y(0)), b = G.evaluate(gb, y(1)), c = G.evaluate(gc, y(2));
+    const Vec2 xa = a.p + y(3) * a.n;
+    const Vec2 e1 = xa - b.p - y(3) * b.n, e2 = xa - c.p - y(3) * c.n;
+    if (std::max(e1.norm(), e2.norm()) <= tolerance)
+    {
+      if (y(0) < -1e-9 || y(0) > 1 + 1e-9 || y(1) < -1e-9 || y(1) > 1 + 1e-9 || y(2) < -1e-9 ||
+        y(2) > 1 + 1e-9 || y(3) < 0.0)
+        return false;
+      sa = std::min(1.0, std::max(0.0, y(0)));
+      sb = std::min(1.0, std::max(0.0, y(1)));
+      sc = std::min(1.0, std::max(0.0, y(2)));
+      r = y(3);
+      return true;
+    }
+    const Vec2 ca = a.dp + y(3) * a.dn, cb = b.dp + y(3) * b.dn, cc = c.dp + y(3) * c.dn;
+    Eigen::Matrix4d J;
+    J << ca.x(), -cb.x(), 0.0, a.n.x() - b.n.x(), //
+      ca.y(), -cb.y(), 0.0, a.n.y() - b.n.y(),    //
+      ca.x(), 0.0, -cc.x(), a.n.x() - c.n.x(),    //
+      ca.y(), 0.0, -cc.y(), a.n.y() - c.n.y();
+    const Eigen::FullPivLU<Eigen::Matrix4d> lu(J);
+    if (!lu.isInvertible())
+      return false;
+    y -= lu.solve(Eigen::Vector4d(e1.x(), e1.y(), e2.x(), e2.y()));
+    if (!y.allFinite())
+      return false;
+  }
+  return false;
+}
+
+} // namespace exactmat

@@ -50,6 +50,11 @@ struct MedialGraph
   std::vector<MedialNode> nodes;
   std::vector<MedialSegment> segments;
 
+  /// Joins the two segments at every degree-2 CycleJoint node (where tracing started from
+  /// a normal point) so each simplified segment is one polyline; a joint that closes a
+  /// cycle on its own segment stays.
+  void mergeJoints();
+
   int count(MedialPointType type) const;
   /// Independent cycles: segments − nodes + connected components.
   int cycleCount() const;

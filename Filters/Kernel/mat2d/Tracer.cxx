@@ -497,8 +497,35 @@ void Tracer::trace(const Pending& p)
     };
     if (closing && (x0 - centre).norm() <= std::max(h, 1e-9 * L))
     {
-      endAtCentre();
-      break;
+      // The radius grows like a square root into such an end: accept the last chord only
+      // if its midpoint is within the tolerance too (or the steps cannot shrink further).
+      bool chordOk = O.fixedStep || h < 1e-9 * L || (x0 - centre).norm() <= 1e-9 * L;
+      if (!chordOk)
+      {
+        BisectorState ym{ 0.5 * (y.sa + (lmpc.g == a.g ? lmpc.s : y.sa)),
+          0.5 * (y.sb + (lmpc.g == b.g ? lmpc.s : y.sb)), 0.5 * (y.r + 1.0 / kappa) };
+        const int hold = (lmpc.g == a.g) ? 0 : 1;
+        chordOk = B.correct(ym, hold, 1e-13 * L) &&
+          (B.point(ym) - 0.5 * (x0 + centre)).norm() + std::abs(ym.r - 0.5 * (y.r + 1.0 / kappa)) <=
+            O.tolerance * L;
+      }
+      if (chordOk && !checkEveryStep && sinceCheck > 0 && !emptyDisk(x0, y.r))
+      {
+        // Fixed-step mode: a branch point was passed since the last check.
+        a = good.a;
+        b = good.b;
+        y = good.y;
+        seg.samples.resize(good.samples);
+        Cover.undo(good.coverage);
+        checkEveryStep = true;
+        continue;
+      }
+      if (chordOk)
+      {
+        endAtCentre();
+        break;
+      }
+      h *= 0.5;
     }
 
     const Eigen::Vector3d t = B.tangent(y, +1, -1);
@@ -614,7 +641,10 @@ void Tracer::trace(const Pending& p)
       }
       // The step is geometrically sound; is the point on the MAT?
       ++sinceCheck;
-      const bool check = checkEveryStep || sinceCheck >= checkEvery || joining;
+      // Steps that land on a generator's end may end the segment there (a convex
+      // vertex): they are always checked, as are joins.
+      const bool landsOnEnd = (fixed == 0 && y1.sa >= 1.0 - ParamEps) || (fixed == 1 && y1.sb <= ParamEps);
+      const bool check = checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd;
       const bool valid = curvatureOk(a.g, y1.sa, y1.r) && curvatureOk(b.g, y1.sb, y1.r) &&
         (!check || emptyDisk(x1, y1.r));
       if (!valid)
@@ -654,6 +684,24 @@ void Tracer::trace(const Pending& p)
             hi = mid;
           if ((hi - lo) * (x1 - x0).norm() < 1e-13 * L)
             break;
+        }
+        // Polish with the third generator found at the bisected point.
+        {
+          const Vec2 xg = B.point(yb);
+          const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-8 * L);
+          const GeneratorPoint fa = G.evaluate(a.g, yb.sa), fb = G.evaluate(b.g, yb.sb);
+          for (const BoundaryLocation& c : near)
+          {
+            if ((c.point - fa.p).norm() < 1e-7 * L || (c.point - fb.p).norm() < 1e-7 * L ||
+              c.continuum)
+              continue;
+            BisectorState yp = yb;
+            double sc = c.s;
+            if (polishBranchPoint(G, a.g, b.g, c.g, yp.sa, yp.sb, sc, yp.r, 1e-14 * L) &&
+              yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9 && (B.point(yp) - xg).norm() < 1e-6 * L)
+              yb = yp;
+            break;
+          }
         }
         const Vec2 xb = B.point(yb);
         a.s = yb.sa;
@@ -713,6 +761,10 @@ void Tracer::trace(const Pending& p)
     }
   }
   seg.endNode = endNode;
+  if (std::getenv("EXACTMAT_DEBUG"))
+    std::fprintf(stderr, "segment %d->%d gens (%d..%d) (%d..%d) samples %zu from (%g %g) to (%g %g)\n",
+      seg.startNode, endNode, p.a.g, a.g, p.b.g, b.g, seg.samples.size(), seg.samples.front().x.x(),
+      seg.samples.front().x.y(), seg.samples.back().x.x(), seg.samples.back().x.y());
   Graph.segments.push_back(std::move(seg));
   const int sid = static_cast<int>(Graph.segments.size()) - 1;
   Graph.nodes[Graph.segments.back().startNode].segments.push_back(sid);
@@ -827,6 +879,7 @@ MedialGraph Tracer::run()
     }
   }
   reportProgress();
+  Graph.mergeJoints();
   return std::move(Graph);
 }
 } // namespace

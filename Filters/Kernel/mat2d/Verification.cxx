@@ -1,0 +1,87 @@
+#include "Verification.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace exactmat
+{
+
+namespace
+{
+// Adds the boundary swept by a front going from `from` to `to` in direction dir.
+void sweep(const Generators& G, std::vector<std::vector<std::pair<double, double>>>& swept,
+  const BoundaryLocation& from, const BoundaryLocation& to, int dir)
+{
+  int g = from.g;
+  double s = from.s;
+  for (int k = 0; k < G.size() + 1; ++k)
+  {
+    if (g == to.g && (dir > 0 ? to.s >= s - 1e-9 : to.s <= s + 1e-9))
+    {
+      swept[g].push_back({ std::min(s, to.s), std::max(s, to.s) });
+      return;
+    }
+    swept[g].push_back(dir > 0 ? std::make_pair(s, 1.0) : std::make_pair(0.0, s));
+    g = dir > 0 ? G[g].next : G[g].prev;
+    s = dir > 0 ? 0.0 : 1.0;
+  }
+}
+} // namespace
+
+MAT2DVerification verifyMAT2D(const Generators& G, const MedialGraph& graph)
+{
+  MAT2DVerification v;
+  const double L = G.size2D();
+  auto checkPoint = [&](const Vec2& x, double r, int minFootpoints) {
+    ++v.points;
+    v.maxDistanceError = std::max(v.maxDistanceError, std::abs(G.distance(x) - r) / L);
+    if (minFootpoints > 0 && r > 1e-6 * L)
+    {
+      const auto f = G.footpointsWithin(x, r * (1.0 + 1e-6) + 1e-9 * L);
+      const bool continuum = std::any_of(f.begin(), f.end(), [](const BoundaryLocation& b) { return b.continuum; });
+      if (!continuum && static_cast<int>(f.size()) < minFootpoints)
+        ++v.footpointShortfalls;
+    }
+  };
+  std::vector<std::vector<std::pair<double, double>>> swept(G.size());
+  for (const MedialNode& n : graph.nodes)
+  {
+    checkPoint(n.sample.x, n.sample.radius, n.type == MedialPointType::Branch ? 3 : 0);
+    for (const BoundaryLocation& f : n.footpoints)
+      if (f.continuum || n.type == MedialPointType::CircleCentre)
+        swept[f.g].push_back({ 0.0, 1.0 });
+  }
+  for (const MedialSegment& s : graph.segments)
+  {
+    for (size_t i = 1; i + 1 < s.samples.size(); ++i)
+      checkPoint(s.samples[i].x, s.samples[i].radius, 2);
+    for (size_t i = 0; i + 1 < s.samples.size(); ++i)
+    {
+      sweep(G, swept, s.samples[i].foot[0], s.samples[i + 1].foot[0], +1);
+      sweep(G, swept, s.samples[i].foot[1], s.samples[i + 1].foot[1], -1);
+    }
+  }
+  for (int g = 0; g < G.size(); ++g)
+  {
+    if (G[g].kind != GeneratorKind::Edge)
+      continue; // corners are swept in angle; their coverage follows from their edges'
+    auto& list = swept[g];
+    std::sort(list.begin(), list.end());
+    double end = 0.0, total = 0.0, unionLength = 0.0;
+    for (const auto& [lo, hi] : list)
+    {
+      if (lo > end)
+        v.uncovered += lo - end;
+      unionLength += std::max(0.0, hi - std::max(lo, end));
+      total += hi - lo;
+      end = std::max(end, hi);
+    }
+    v.uncovered += std::max(0.0, 1.0 - end);
+    v.coveredTwice += std::max(0.0, total - unionLength);
+  }
+  v.cycles = graph.cycleCount();
+  v.holes = G.boundary().holeCount();
+  return v;
+}
+
+} // namespace exactmat

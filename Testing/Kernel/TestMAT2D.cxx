@@ -1,0 +1,253 @@
+// The 2D MAT kernel against closed forms and the exact boundary.
+#include "common/InputError.h"
+#include "mat2d/Tracer.h"
+#include "mat2d/Verification.h"
+#include "shapes/Catalogue.h"
+#include "shapes/Primitives.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace exactmat;
+
+namespace
+{
+// Every MAT point's global distance to the exact boundary equals its radius to this
+// fraction of the domain size.
+constexpr double VerifiedDistanceTolerance = 1e-9;
+
+struct TracedMAT
+{
+  Boundary2D boundary;
+  std::unique_ptr<Generators> generators;
+  MedialGraph graph;
+};
+
+TracedMAT run(const std::vector<NurbsCurve>& curves, const MAT2DOptions& options = {})
+{
+  TracedMAT r{ Boundary2D::build(curvePieces(curves)), nullptr, {} };
+  r.generators = std::make_unique<Generators>(r.boundary);
+  r.graph = computeMAT2D(*r.generators, options);
+  return r;
+}
+
+TracedMAT runShape(const std::string& name, const MAT2DOptions& options = {})
+{
+  return run(makeShape(name).curves, options);
+}
+
+void expectVerified(const TracedMAT& r, const std::string& what)
+{
+  const MAT2DVerification v = verifyMAT2D(*r.generators, r.graph);
+  EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what;
+  EXPECT_EQ(v.footpointShortfalls, 0) << what;
+  EXPECT_LE(v.uncovered, 1e-6) << what;
+  EXPECT_LE(v.coveredTwice, 1e-6) << what;
+  EXPECT_EQ(v.cycles, v.holes) << what;
+  EXPECT_GE(v.points, 1) << what;
+}
+
+template <typename F>
+void forEachSample(const MedialGraph& g, F f)
+{
+  for (const MedialSegment& s : g.segments)
+    for (const MedialSample& m : s.samples)
+      f(m, s);
+}
+} // namespace
+
+class EveryShape2D : public ::testing::TestWithParam<const char*>
+{
+};
+
+TEST_P(EveryShape2D, VerifiedAgainstTheExactBoundaryForSeveralSteps)
+{
+  for (double tolerance : { 1e-3, 1e-6 })
+  {
+    MAT2DOptions o;
+    o.tolerance = tolerance;
+    expectVerified(runShape(GetParam(), o), std::string(GetParam()) + " adaptive " + std::to_string(tolerance));
+  }
+  for (double step : { 1e-2, 1e-3 })
+  {
+    MAT2DOptions o;
+    o.fixedStep = true;
+    o.step = step;
+    o.branchCheckStep = 10 * step;
+    expectVerified(runShape(GetParam(), o), std::string(GetParam()) + " fixed " + std::to_string(step));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, EveryShape2D,
+  ::testing::Values("rectangle", "rounded-rectangle", "circle", "ellipse", "annulus", "l-shape",
+    "star", "blob", "spiral", "plate-with-holes", "narrow-passage"),
+  [](const auto& info) {
+    std::string n = info.param;
+    std::replace(n.begin(), n.end(), '-', '_');
+    return n;
+  });
+
+TEST(MAT2D, RectangleHasFiveSegmentsAndTwoBranchPoints)
+{
+  // 4 × 2: branch points at (±1, 0), r = 1; the middle segment y = 0 with r = 1; the corner
+  // segments on the diagonals |x| − 1 = |y| − ... with r = 1 − |y|.
+  const TracedMAT r = runShape("rectangle");
+  EXPECT_EQ(r.graph.segments.size(), 5u);
+  EXPECT_EQ(r.graph.count(MedialPointType::Branch), 2);
+  EXPECT_EQ(r.graph.count(MedialPointType::ConvexVertexEnd), 4);
+  for (const MedialNode& n : r.graph.nodes)
+  {
+    if (n.type != MedialPointType::Branch)
+      continue;
+    EXPECT_NEAR(std::abs(n.sample.x.x()), 1.0, 1e-9);
+    EXPECT_NEAR(n.sample.x.y(), 0.0, 1e-9);
+    EXPECT_NEAR(n.sample.radius, 1.0, 1e-9);
+    EXPECT_EQ(n.footpoints.size(), 3u);
+  }
+  forEachSample(r.graph, [](const MedialSample& m, const MedialSegment&) {
+    const double x = std::abs(m.x.x()), y = std::abs(m.x.y());
+    if (x <= 1.0 + 1e-9)
+    {
+      EXPECT_NEAR(y, 0.0, 1e-9);
+      EXPECT_NEAR(m.radius, 1.0, 1e-9);
+    }
+    else
+    {
+      EXPECT_NEAR(x - 1.0, y, 1e-9); // on the corner's bisector
+      EXPECT_NEAR(m.radius, 1.0 - y, 1e-9);
+    }
+  });
+}
+
+TEST(MAT2D, EllipseMatchesTheClosedForm)
+{
+  // a = 2, b = 1: the segment |x| ≤ (a² − b²)/a = 1.5 on y = 0, r = b·sqrt(1 − x²/(a² − b²)).
+  const double a = 2.0, b = 1.0, c2 = a * a - b * b;
+  const TracedMAT r = runShape("ellipse");
+  EXPECT_EQ(r.graph.segments.size(), 1u);
+  EXPECT_EQ(r.graph.count(MedialPointType::CurvatureCentreEnd), 2);
+  double maxX = 0.0;
+  forEachSample(r.graph, [&](const MedialSample& m, const MedialSegment&) {
+    EXPECT_NEAR(m.x.y(), 0.0, 1e-12);
+    EXPECT_NEAR(m.radius, b * std::sqrt(std::max(0.0, 1.0 - m.x.x() * m.x.x() / c2)), 1e-10);
+    maxX = std::max(maxX, std::abs(m.x.x()));
+  });
+  EXPECT_NEAR(maxX, c2 / a, 1e-10);
+}
+
+TEST(MAT2D, AnnulusIsOneCycle)
+{
+  const TracedMAT r = runShape("annulus"); // R1 = 1, R2 = 0.5
+  EXPECT_EQ(r.graph.segments.size(), 1u);
+  EXPECT_EQ(r.graph.cycleCount(), 1);
+  EXPECT_EQ(r.graph.count(MedialPointType::Branch), 0);
+  forEachSample(r.graph, [](const MedialSample& m, const MedialSegment&) {
+    EXPECT_NEAR(m.x.norm(), 0.75, 1e-12);
+    EXPECT_NEAR(m.radius, 0.25, 1e-12);
+  });
+}
+
+TEST(MAT2D, RegularPolygonHasSpokesToTheCentre)
+{
+  for (int n : { 3, 5, 6, 8 })
+  {
+    Vec3List corners;
+    for (int k = 0; k < n; ++k)
+      corners.push_back(Vec3(std::cos(2 * M_PI * k / n), std::sin(2 * M_PI * k / n), 0));
+    const TracedMAT r = run(makePolygon(corners));
+    EXPECT_EQ(static_cast<int>(r.graph.segments.size()), n) << n;
+    ASSERT_EQ(r.graph.count(MedialPointType::Branch), 1) << n;
+    for (const MedialNode& node : r.graph.nodes)
+    {
+      if (node.type == MedialPointType::Branch)
+      {
+        EXPECT_LT(node.sample.x.norm(), 1e-9);
+        EXPECT_NEAR(node.sample.radius, std::cos(M_PI / n), 1e-9); // the apothem
+        EXPECT_EQ(static_cast<int>(node.footpoints.size()), n);
+      }
+    }
+    // Every point lies on a spoke from the centre to a corner.
+    forEachSample(r.graph, [&](const MedialSample& m, const MedialSegment&) {
+      const double angle = std::atan2(m.x.y(), m.x.x()) * n / (2 * M_PI);
+      if (m.x.norm() > 1e-9)
+        EXPECT_NEAR(angle, std::round(angle), 1e-9);
+      EXPECT_NEAR(m.radius, m.x.norm() > 1e-12 ? (1.0 - m.x.norm()) * std::cos(M_PI / n) : std::cos(M_PI / n), 1e-9);
+    });
+    expectVerified(r, "polygon " + std::to_string(n));
+  }
+}
+
+TEST(MAT2D, LShapeHasTheParabolicArcOfItsReflexCorner)
+{
+  // L: (0,0) (4,0) (4,1) (1,1) (1,2) (0,2); reflex corner (1,1). Where the footpoints are
+  // the corner and the edge y = 0, the MAT is the parabola (x−1)² + (y−1)² = y².
+  const TracedMAT r = runShape("l-shape");
+  EXPECT_EQ(r.graph.count(MedialPointType::Branch), 3);
+  int onParabola = 0;
+  forEachSample(r.graph, [&](const MedialSample& m, const MedialSegment&) {
+    const Generators& G = *r.generators;
+    for (int k = 0; k < 2; ++k)
+    {
+      const BoundaryLocation& c = m.foot[k];
+      const BoundaryLocation& e = m.foot[1 - k];
+      if (G[c.g].kind == GeneratorKind::ReflexCorner && G[e.g].kind == GeneratorKind::Edge &&
+        std::abs(e.point.y()) < 1e-12 && m.radius > 1e-9)
+      {
+        const double x = m.x.x(), y = m.x.y();
+        EXPECT_NEAR((x - 1) * (x - 1) + (y - 1) * (y - 1), y * y, 1e-9);
+        EXPECT_NEAR(m.radius, y, 1e-9);
+        ++onParabola;
+      }
+    }
+  });
+  EXPECT_GT(onParabola, 3);
+}
+
+TEST(MAT2D, CircleIsItsCentre)
+{
+  const TracedMAT r = runShape("circle");
+  ASSERT_EQ(r.graph.nodes.size(), 1u);
+  EXPECT_EQ(r.graph.nodes[0].type, MedialPointType::CircleCentre);
+  EXPECT_LT(r.graph.nodes[0].sample.x.norm(), 1e-12);
+  EXPECT_NEAR(r.graph.nodes[0].sample.radius, 1.0, 1e-12);
+}
+
+TEST(MAT2D, AdaptiveStepBoundsTheChordError)
+{
+  // On the ellipse, the polyline between samples stays within the tolerance of the true
+  // MAT (the segment y = 0) and the radius interpolates within it too.
+  for (double tol : { 1e-3, 1e-5 })
+  {
+    MAT2DOptions o;
+    o.tolerance = tol;
+    const TracedMAT r = runShape("ellipse", o);
+    const double L = r.boundary.diagonal();
+    for (const MedialSegment& s : r.graph.segments)
+      for (size_t i = 0; i + 1 < s.samples.size(); ++i)
+      {
+        const MedialSample &p = s.samples[i], &q = s.samples[i + 1];
+        const Vec2 mid = 0.5 * (p.x + q.x);
+        const double rTrue = std::sqrt(std::max(0.0, 1.0 - mid.x() * mid.x() / 3.0));
+        EXPECT_LE(std::abs(0.5 * (p.radius + q.radius) - rTrue), 1.01 * tol * L);
+      }
+  }
+}
+
+TEST(MAT2D, RunawayTracingIsAnErrorNotAHang)
+{
+  MAT2DOptions o;
+  o.maxSamplesPerSegment = 3;
+  EXPECT_THROW(runShape("ellipse", o), InputError);
+}
+
+TEST(MAT2D, ProgressReachesOne)
+{
+  MAT2DOptions o;
+  std::vector<double> seen;
+  o.progress = [&](double f) { seen.push_back(f); };
+  runShape("plate-with-holes", o);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_NEAR(seen.back(), 1.0, 1e-6);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
