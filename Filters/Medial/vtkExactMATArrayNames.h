@@ -13,7 +13,13 @@
  * - `ParameterRange` (cell data, 2 or 4 components): the knot span (t0, t1) or
  *   (u0, u1, v0, v1) of the cell in its entity, so a writer can rebuild the original NURBS.
  *
- * Output (MAT) arrays: `Radius` (point data, double): the radius of the maximal disk/ball.
+ * Output (MAT) arrays, point data: `Radius` (double): the radius of the maximal disk/ball;
+ * `PointType` (int, see exactmat::MedialPointType: 0 normal, 1 branch, 2 end at a convex
+ * vertex, 3 end at a centre of curvature, 4 cycle joint, 5 circle centre); `Footpoint0`,
+ * `Footpoint1` (3-vectors): the touching points of the disk. Cell data: `SegmentId` (int,
+ * −1 for node vertex cells), `Generator0`, `Generator1` (int: the EdgeId of the boundary
+ * entity, −1 for a reflex corner), `Generators` (string: every generator of the cell,
+ * e.g. "3,7,12" for a branch node; reflex corners as "v<vertex>").
  */
 
 namespace exactmat
@@ -26,6 +32,13 @@ constexpr const char* EdgeId = "EdgeId";
 constexpr const char* FaceId = "FaceId";
 constexpr const char* ParameterRange = "ParameterRange";
 constexpr const char* Radius = "Radius";
+constexpr const char* PointType = "PointType";
+constexpr const char* Footpoint0 = "Footpoint0";
+constexpr const char* Footpoint1 = "Footpoint1";
+constexpr const char* SegmentId = "SegmentId";
+constexpr const char* Generator0 = "Generator0";
+constexpr const char* Generator1 = "Generator1";
+constexpr const char* Generators = "Generators";
 } // namespace arrays
 } // namespace exactmat
 

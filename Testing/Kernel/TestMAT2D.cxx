@@ -171,7 +171,9 @@ TEST(MAT2D, RegularPolygonHasSpokesToTheCentre)
     forEachSample(r.graph, [&](const MedialSample& m, const MedialSegment&) {
       const double angle = std::atan2(m.x.y(), m.x.x()) * n / (2 * M_PI);
       if (m.x.norm() > 1e-9)
+      {
         EXPECT_NEAR(angle, std::round(angle), 1e-9);
+      }
       EXPECT_NEAR(m.radius, m.x.norm() > 1e-12 ? (1.0 - m.x.norm()) * std::cos(M_PI / n) : std::cos(M_PI / n), 1e-9);
     });
     expectVerified(r, "polygon " + std::to_string(n));
