@@ -8,7 +8,7 @@ import math
 import sys
 
 from paraview import servermanager
-from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, Render, ResetCamera,
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, LoadPlugin, Render, ResetCamera,
                              SaveScreenshot, Show)
 
 plugin = sys.argv[1]
@@ -34,6 +34,17 @@ for i in range(data.GetNumberOfPoints()):
         radii.add(round(math.hypot(x, y), 12))
 assert radii == {0.75, 2.0}, radii
 
+# The MAT filter by its proxy name: the annulus' MAT is the circle of radius 1.375 with
+# radius function 0.625 everywhere.
+mat = MAT2DFilter(Input=source)  # noqa: F821
+mat.UpdatePipeline()
+medial = servermanager.Fetch(mat)
+assert medial.GetNumberOfPoints() > 20
+r = medial.GetPointData().GetArray("Radius")
+for i in range(medial.GetNumberOfPoints()):
+    x, y, z = medial.GetPoint(i)
+    assert abs(math.hypot(x, y) - 1.375) < 1e-12 and abs(r.GetValue(i) - 0.625) < 1e-12
+
 # The catalogue is selectable by name; a 3D shape gives Bezier quadrilaterals.
 source.Shape = "pillow"
 source.UpdatePipeline()
@@ -54,8 +65,16 @@ if png:
     display = Show(source, view)
     display.NonlinearSubdivisionLevel = 4
     display.LineWidth = 3.0
-    display.AmbientColor = [0.1, 0.2, 0.6]
-    display.DiffuseColor = [0.1, 0.2, 0.6]
+    display.AmbientColor = [0.1, 0.1, 0.1]
+    display.DiffuseColor = [0.1, 0.1, 0.1]
+    mat.UpdatePipeline()
+    medialDisplay = Show(mat, view)
+    medialDisplay.LineWidth = 4.0
+    ColorBy(medialDisplay, ("POINTS", "Radius"))
+    medialDisplay.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(GetColorTransferFunction("Radius"), view)
+    bar.TitleColor = [0.1, 0.1, 0.1]
+    bar.LabelColor = [0.1, 0.1, 0.1]
     ResetCamera(view)
     Render(view)
     SaveScreenshot(png, view, ImageResolution=[900, 500])

@@ -13,7 +13,7 @@ from vtkmodules.vtkCommonDataModel import vtkGenericCell
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
 import exactmat
-from exactmat import vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
+from exactmat import vtkMAT2DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GEOMETRY_TOLERANCE = 1e-12
@@ -106,6 +106,44 @@ class PythonPackage(unittest.TestCase):
             reader.Update()
             with self.assertRaisesRegex(exactmat.ExactMATError, r"curves\[0\]: control point 1 has weight -1"):
                 errors.check()
+
+    def test_mat2d_filter_radius_through_numpy(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("annulus")  # R = 1, r = 0.5: the MAT is the circle 0.75, radius 0.25
+        mat = vtkMAT2DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.Update()
+        out = mat.GetOutput()
+        points = vtk_to_numpy(out.GetPoints().GetData())
+        radius = vtk_to_numpy(out.GetPointData().GetArray("Radius"))
+        np.testing.assert_allclose(np.linalg.norm(points, axis=1), 0.75, atol=1e-12)
+        np.testing.assert_allclose(radius, 0.25, atol=1e-12)
+        self.assertEqual(mat.GetNumberOfSegments(), 1)
+        self.assertLessEqual(mat.GetMaximumVerifiedError(), 1e-12)
+        foot = vtk_to_numpy(out.GetPointData().GetArray("Footpoint0"))
+        np.testing.assert_allclose(np.linalg.norm(foot - points, axis=1), radius, atol=1e-12)
+
+    def test_mat2d_filter_errors_reach_python(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("box")
+        mat = vtkMAT2DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        errors = exactmat.ErrorObserver().watch(mat)
+        mat.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, "surface cells"):
+            errors.check()
+
+    def test_mat2d_defaults_equal_the_paraview_xml(self):
+        xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", "MAT2DFilter.xml")
+        proxy = ET.parse(xml).getroot().find(".//SourceProxy[@name='MAT2DFilter']")
+        mat = vtkMAT2DFilter()
+        checked = 0
+        for prop in proxy:
+            if prop.tag in ("DoubleVectorProperty", "IntVectorProperty"):
+                name = prop.get("name")
+                self.assertEqual(float(getattr(mat, "Get" + name)()), float(prop.get("default_values")), name)
+                checked += 1
+        self.assertEqual(checked, 5)
 
     def test_defaults_equal_the_paraview_xml(self):
         xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", "NURBSSource.xml")

@@ -1,0 +1,92 @@
+"""The `exactmat` program as a user runs it: the main job on the bundled shape and on
+files, its summary, the .vtp it writes (checked numerically), the PNG, and bad input."""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+EXACTMAT = sys.argv.pop(1)
+DATA = sys.argv.pop(1)
+
+
+def run(*args, cwd=None):
+    return subprocess.run([EXACTMAT, *args], capture_output=True, text=True, cwd=cwd, timeout=300)
+
+
+def summary_value(text, key):
+    m = re.search(r"^\s+" + re.escape(key) + r"\s+([-+0-9.eE]+)", text, re.M)
+    assert m, f"no '{key}' in:\n{text}"
+    return float(m.group(1))
+
+
+class ExactmatCLI(unittest.TestCase):
+    def test_default_shape_summary_and_output(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r = run("2d", "-o", "mat.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("plate-with-holes", r.stdout)
+            self.assertEqual(summary_value(r.stdout, "segments"), 20)
+            self.assertEqual(summary_value(r.stdout, "branch points"), 11)
+            self.assertEqual(summary_value(r.stdout, "cycles"), 3)
+            self.assertLessEqual(summary_value(r.stdout, "largest verified error"), 1e-9)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(tmp, "mat.vtp"))
+            reader.Update()
+            mat = reader.GetOutput()
+            self.assertEqual(mat.GetNumberOfPoints(), summary_value(r.stdout, "points"))
+            radius = mat.GetPointData().GetArray("Radius")
+            self.assertIsNotNone(radius)
+            lo, hi = radius.GetRange()
+            self.assertGreaterEqual(lo, 0.0)
+            self.assertLess(hi, 1.0)  # the plate is 4 x 2
+            self.assertEqual(mat.GetNumberOfLines(), 20)
+
+    def test_json_input_fixed_step_and_png(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "mat.png")
+            r = run("2d", os.path.join(DATA, "two-loops.json"), "-o", os.path.join(tmp, "m.vtp"),
+                    "--step", "2e-3", "--png", png)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("fixed step", r.stdout)
+            self.assertEqual(summary_value(r.stdout, "cycles"), 1)  # one hole
+            self.assertLessEqual(summary_value(r.stdout, "largest verified error"), 1e-9)
+            image = vtkPNGReader()
+            image.SetFileName(png)
+            image.Update()
+            dims = image.GetOutput().GetDimensions()
+            self.assertEqual(dims[:2], (1200, 800))
+            scalars = image.GetOutput().GetPointData().GetScalars()
+            coloured = sum(1 for i in range(0, scalars.GetNumberOfTuples(), 11)
+                           if len({scalars.GetComponent(i, c) for c in range(3)}) > 1)
+            self.assertGreater(coloured, 200, "the MAT (coloured by radius) is not in the picture")
+
+    def test_bad_input_is_a_clear_error(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            bad = os.path.join(tmp, "open.json")
+            with open(bad, "w") as f:
+                f.write('{"curves": [{"degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 0], [1, 0]]},'
+                        ' {"degree": 1, "knots": [0, 0, 1, 1], "points": [[1, 0], [1, 1]]}]}')
+            r = run("2d", bad, "-o", os.path.join(tmp, "m.vtp"))
+            self.assertEqual(r.returncode, 1)
+            self.assertRegex(r.stderr, r"exactmat: error: open loop: edge 0 starts at \(0, 0, 0\)")
+            self.assertNotIn("vtkExecutive", r.stderr)
+            r = run("2d", os.path.join(tmp, "missing.json"))
+            self.assertEqual(r.returncode, 1)
+            self.assertIn("cannot open", r.stderr)
+            r = run("2d", "--tolerance", "abc")
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("usage:", r.stderr)
+
+    def test_shapes_lists_the_catalogue(self):
+        r = run("shapes")
+        self.assertEqual(r.returncode, 0)
+        self.assertIn("narrow-passage", r.stdout.split())
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

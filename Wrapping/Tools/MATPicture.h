@@ -1,0 +1,14 @@
+#pragma once
+/// @file MATPicture.h
+/// @brief Renders a boundary and its MAT (coloured by Radius) off-screen into a PNG.
+
+#include <string>
+
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+/// Draws the exact boundary (each Bézier cell sampled densely) in dark grey, the MAT
+/// polylines coloured by `Radius` with a colour bar, and the graph's nodes as points.
+/// Returns false (with a message in `error`) when rendering is not possible.
+bool writeMATPicture(vtkUnstructuredGrid* boundary, vtkPolyData* mat, const std::string& png,
+  const std::string& title, std::string& error);

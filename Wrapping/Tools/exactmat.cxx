@@ -1,0 +1,368 @@
+// exactmat — the medial axis transform of exact NURBS boundaries from the command line.
+//
+//   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
+//               [--png OUT.png] [--shape NAME]
+//   exactmat shapes
+//
+// INPUT is a .vtu of (rational) Bézier cells or ExactMAT's .json NURBS format; without
+// one, the bundled catalogue shape plate-with-holes (or --shape NAME) is used.
+#include "MATPicture.h"
+
+#include "vtkExactMATArrayNames.h"
+#include "vtkMAT2DFilter.h"
+#include "vtkMATBoundaryConversion.h"
+#include "vtkNURBSReader.h"
+#include "vtkNURBSSource.h"
+
+#include "common/InputError.h"
+#include "mat2d/Generators.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkIdList.h>
+#include <vtkDataArray.h>
+#include <vtkLogger.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+const char* Usage = R"(usage:
+  exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
+              [--png OUT.png] [--shape NAME]
+  exactmat shapes          list the bundled shapes
+
+  INPUT          boundary curves: a .vtu of Bezier cells, or ExactMAT .json NURBS;
+                 default: the bundled shape plate-with-holes (or --shape NAME)
+  -o OUT.vtp     the MAT as VTK XML polydata (default: exactmat-2d.vtp)
+  --tolerance T  adaptive steps: polyline within T x domain size of the MAT (default 1e-4)
+  --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
+                 default 10 S)
+  --png OUT.png  a picture of the boundary and the MAT coloured by radius
+)";
+
+struct Arguments
+{
+  std::string command, input, output = "exactmat-2d.vtp", png, shape = "plate-with-holes";
+  double tolerance = 1e-4, step = 0.0, branchStep = 0.0;
+};
+
+[[noreturn]] void usageError(const std::string& message)
+{
+  std::cerr << "exactmat: " << message << "\n" << Usage;
+  std::exit(2);
+}
+
+double number(const std::string& flag, const char* text)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (!text[0] || *end || !(v > 0.0) || !std::isfinite(v))
+    usageError(flag + " needs a positive number, got '" + text + "'");
+  return v;
+}
+
+Arguments parse(int argc, char* argv[])
+{
+  Arguments a;
+  if (argc < 2)
+    usageError("no command");
+  a.command = argv[1];
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc)
+        usageError(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "-o" || arg == "--output")
+      a.output = value();
+    else if (arg == "--png")
+      a.png = value();
+    else if (arg == "--tolerance")
+      a.tolerance = number(arg, value());
+    else if (arg == "--step")
+      a.step = number(arg, value());
+    else if (arg == "--branch-step")
+      a.branchStep = number(arg, value());
+    else if (arg == "--shape")
+      a.shape = value();
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (!arg.empty() && arg[0] == '-')
+      usageError("unknown option " + arg);
+    else if (a.input.empty())
+      a.input = arg;
+    else
+      usageError("more than one INPUT");
+  }
+  return a;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix)
+{
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Errors of VTK objects go to stderr as one line each (not VTK's multi-line log).
+class ErrorLine : public vtkCommand
+{
+public:
+  static ErrorLine* New() { return new ErrorLine; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    std::string m = data ? static_cast<const char*>(data) : "unknown error";
+    const size_t colon = m.find("): ");
+    if (colon != std::string::npos)
+      m = m.substr(colon + 3);
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+      m.pop_back();
+    std::cerr << "exactmat: error: " << m << "\n";
+    Failed = true;
+  }
+  bool Failed = false;
+};
+
+vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine* errors, std::string& label)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (a.input.empty())
+  {
+    auto source = vtkSmartPointer<vtkNURBSSource>::New();
+    source->AddObserver(vtkCommand::ErrorEvent, errors);
+    if (!source->SetShapeName(a.shape.c_str()))
+      return nullptr;
+    label = a.shape + " (bundled shape)";
+    reader = source;
+  }
+  else if (endsWith(a.input, ".json"))
+  {
+    auto r = vtkSmartPointer<vtkNURBSReader>::New();
+    r->SetFileName(a.input.c_str());
+    reader = r;
+    label = a.input;
+  }
+  else if (endsWith(a.input, ".vtu"))
+  {
+    if (access(a.input.c_str(), R_OK) != 0)
+    {
+      std::cerr << "exactmat: error: cannot read '" << a.input << "'\n";
+      return nullptr;
+    }
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(a.input.c_str());
+    reader = r;
+    label = a.input;
+  }
+  else
+  {
+    std::cerr << "exactmat: error: '" << a.input << "' is neither .vtu nor .json\n";
+    return nullptr;
+  }
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->Update();
+  if (errors->Failed)
+    return nullptr;
+  auto grid = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
+  return grid;
+}
+
+// Independent cycles of the medial graph: polylines − nodes + connected components.
+int cycleCount(vtkPolyData* mat)
+{
+  std::vector<vtkIdType> parent(mat->GetNumberOfPoints());
+  for (size_t i = 0; i < parent.size(); ++i)
+    parent[i] = static_cast<vtkIdType>(i);
+  auto find = [&](vtkIdType x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  long long components = mat->GetNumberOfVerts(), lines = 0;
+  vtkCellArray* cells = mat->GetLines();
+  vtkNew<vtkIdList> ids;
+  for (cells->InitTraversal(); cells->GetNextCell(ids); ++lines)
+  {
+    const vtkIdType a = find(ids->GetId(0)), b = find(ids->GetId(ids->GetNumberOfIds() - 1));
+    if (a != b)
+    {
+      parent[a] = b;
+      --components;
+    }
+  }
+  return static_cast<int>(lines - mat->GetNumberOfVerts() + components);
+}
+
+int run2D(const Arguments& a)
+{
+  vtkNew<ErrorLine> errors;
+  std::string label;
+  vtkSmartPointer<vtkUnstructuredGrid> boundary = loadBoundary(a, errors, label);
+  if (!boundary)
+    return 1;
+
+  vtkNew<vtkMAT2DFilter> mat;
+  mat->SetInputData(boundary);
+  mat->SetTolerance(a.tolerance);
+  mat->VerifyOutputOff(); // verified below, independently, and timed apart
+  if (a.step > 0.0)
+  {
+    mat->FixedStepOn();
+    mat->SetStep(a.step);
+    mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
+  }
+  mat->AddObserver(vtkCommand::ErrorEvent, errors);
+  // Progress on long runs: a line on stderr every 10% once a second has passed.
+  const auto start = std::chrono::steady_clock::now();
+  int lastDecile = -1;
+  vtkNew<vtkCallbackCommand> progress;
+  struct ProgressState
+  {
+    std::chrono::steady_clock::time_point start;
+    int* lastDecile;
+  } state{ start, &lastDecile };
+  progress->SetClientData(&state);
+  progress->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+    auto* s = static_cast<ProgressState*>(client);
+    const double f = *static_cast<double*>(call);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s->start).count();
+    const int decile = static_cast<int>(f * 10.0);
+    if (seconds > 1.0 && decile > *s->lastDecile)
+    {
+      *s->lastDecile = decile;
+      std::cerr << "exactmat: tracing " << 10 * decile << "%\n";
+    }
+  });
+  mat->AddObserver(vtkCommand::ProgressEvent, progress);
+  mat->Update();
+  const double traceMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (errors->Failed)
+    return 1;
+  vtkPolyData* out = mat->GetOutput();
+
+  // Independent check: every point's global distance to the exact boundary vs Radius.
+  const auto verifyStart = std::chrono::steady_clock::now();
+  const exactmat::Boundary2D b =
+    exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(boundary));
+  const exactmat::Generators g(b);
+  vtkDataArray* radius = out->GetPointData()->GetArray(exactmat::arrays::Radius);
+  vtkDataArray* type = out->GetPointData()->GetArray(exactmat::arrays::PointType);
+  double worst = 0.0;
+  int counts[6] = { 0, 0, 0, 0, 0, 0 };
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const exactmat::Vec3 l = b.plane().toLocal(exactmat::Vec3(x[0], x[1], x[2]));
+    worst = std::max(worst, std::abs(g.distance(exactmat::Vec2(l.x(), l.y())) - radius->GetTuple1(i)));
+    const int t = static_cast<int>(type->GetTuple1(i));
+    if (t >= 0 && t < 6)
+      ++counts[t];
+  }
+  const double verifyMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - verifyStart).count();
+
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(out);
+  writer->SetFileName(a.output.c_str());
+  writer->SetDataModeToBinary();
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  if (writer->Write() != 1 || errors->Failed)
+  {
+    std::cerr << "exactmat: error: cannot write '" << a.output << "'\n";
+    return 1;
+  }
+
+  const int holes = b.holeCount();
+  std::printf("ExactMAT 2D medial axis transform of %s\n", label.c_str());
+  std::printf("  boundary            %zu loops (%d holes), %zu Bezier pieces, size %.6g\n",
+    b.loops().size(), holes, b.edges().size(), b.diagonal());
+  std::printf("  mode                %s\n",
+    a.step > 0 ? ("fixed step " + std::to_string(a.step)).c_str()
+               : ("adaptive, tolerance " + std::to_string(a.tolerance)).c_str());
+  std::printf("  segments            %d\n", mat->GetNumberOfSegments());
+  std::printf("  branch points       %d\n", counts[1]);
+  std::printf("  end points          %d (%d at convex vertices, %d at centres of curvature%s)\n",
+    counts[2] + counts[3] + counts[5], counts[2], counts[3], counts[5] ? ", 1 circle centre" : "");
+  std::printf("  cycles              %d (holes: %d)\n", cycleCount(out), holes);
+  std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
+  std::printf("  time                %.2f ms tracing, %.2f ms verification\n", traceMs, verifyMs);
+  std::printf("  largest verified error  %.3g (|distance to boundary - radius| / size)\n", worst / b.diagonal());
+  std::printf("  wrote               %s\n", a.output.c_str());
+
+  if (!a.png.empty())
+  {
+    std::string error;
+    const std::string title = "MAT of " + label + ": " + std::to_string(mat->GetNumberOfSegments()) +
+      " segments, " + std::to_string(counts[1]) + " branch points";
+    if (!writeMATPicture(boundary, out, a.png, title, error))
+    {
+      std::cerr << "exactmat: error: " << error << "\n";
+      return 1;
+    }
+    std::printf("  wrote               %s\n", a.png.c_str());
+  }
+  return 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // Errors reach the user through ErrorLine observers, one line each; the pipeline's own
+  // multi-line log would repeat them.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  const Arguments a = parse(argc, argv);
+  if (a.command == "shapes")
+  {
+    for (int i = 0; i < vtkNURBSSource::GetNumberOfCatalogueShapes(); ++i)
+      std::cout << vtkNURBSSource::GetCatalogueShapeName(i) << "\n";
+    return 0;
+  }
+  if (a.command != "2d")
+    usageError("unknown command '" + a.command + "' (this version has: 2d, shapes)");
+  // Off-screen rendering with this VTK needs an X display: run under Xvfb when none is set.
+  const char* display = std::getenv("DISPLAY");
+  if (!a.png.empty() && (!display || !*display) && !std::getenv("EXACTMAT_NO_XVFB"))
+  {
+    setenv("EXACTMAT_NO_XVFB", "1", 1);
+    std::vector<char*> args{ const_cast<char*>("xvfb-run"), const_cast<char*>("-a"),
+      const_cast<char*>("-s"), const_cast<char*>("-screen 0 1280x1024x24") };
+    for (int i = 0; i < argc; ++i)
+      args.push_back(argv[i]);
+    args.push_back(nullptr);
+    execvp("xvfb-run", args.data());
+    std::cerr << "exactmat: --png needs an X display and xvfb-run was not found (apt-get install xvfb)\n";
+    return 1;
+  }
+  try
+  {
+    return run2D(a);
+  }
+  catch (const exactmat::InputError& e)
+  {
+    std::cerr << "exactmat: error: " << e.what() << "\n";
+    return 1;
+  }
+}
