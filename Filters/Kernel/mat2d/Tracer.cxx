@@ -434,6 +434,14 @@ void Tracer::trace(const Pending& p)
 
   // Whether each front has moved off its starting place (see the sliver rule below).
   bool aLeftStart = false, bLeftStart = false;
+  struct
+  {
+    bool valid = false, closing = false;
+    int ag = -1, bg = -1;
+    BoundaryLocation lmpc;
+    double kappa = 0.0;
+    Stretch stretch;
+  } cache;
   int endNode = -1;
   auto finish = [&](int node) {
     endNode = node;
@@ -480,10 +488,36 @@ void Tracer::trace(const Pending& p)
     const Vec2 x0 = B.point(y);
 
     // Closing in on a point of locally maximal positive curvature: end at its centre.
-    BoundaryLocation lmpc;
-    double kappa = 0.0;
-    Stretch stretch;
-    const bool closing = lmpcBetween(a, b, lmpc, kappa, stretch);
+    // The LMPC of the stretch between the fronts does not move while the stretch shrinks
+    // around it: search again only when the stretch changes generators or loses it.
+    bool closing = false;
+    if (cache.valid && a.g == cache.ag && b.g == cache.bg &&
+      (cache.lmpc.g != a.g || cache.lmpc.s >= a.s) && (cache.lmpc.g != b.g || cache.lmpc.s <= b.s))
+    {
+      closing = cache.closing;
+    }
+    else
+    {
+      cache.closing = lmpcBetween(a, b, cache.lmpc, cache.kappa, cache.stretch);
+      cache.valid = true;
+      cache.ag = a.g;
+      cache.bg = b.g;
+      closing = cache.closing;
+    }
+    const BoundaryLocation lmpc = cache.lmpc;
+    const double kappa = cache.kappa;
+    Stretch stretch = cache.stretch;
+    if (closing)
+    {
+      // The cached stretch starts where the fronts were then; clip it to where they are.
+      for (auto& [g, range] : stretch)
+      {
+        if (g == a.g)
+          range.first = std::max(range.first, a.s);
+        if (g == b.g)
+          range.second = std::min(range.second, b.s);
+      }
+    }
     const Vec2 centre = closing ? Vec2(lmpc.point + lmpc.normal / kappa) : Vec2::Zero();
     auto endAtCentre = [&]() {
       const int id = findNode(centre, 1e-9 * L);
@@ -644,7 +678,11 @@ void Tracer::trace(const Pending& p)
       // Steps that land on a generator's end may end the segment there (a convex
       // vertex): they are always checked, as are joins.
       const bool landsOnEnd = (fixed == 0 && y1.sa >= 1.0 - ParamEps) || (fixed == 1 && y1.sb <= ParamEps);
-      const bool check = checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd;
+      // Prop. 4.2: fronts closing in on the convex vertex their generators share meet no
+      // other branch point on the way (the curvature criterion is still checked).
+      const bool sharedConvexVertex = G[a.g].next == b.g && G[a.g].endJunction == VertexKind::Convex;
+      const bool check = !sharedConvexVertex &&
+        (checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd);
       const bool valid = curvatureOk(a.g, y1.sa, y1.r) && curvatureOk(b.g, y1.sb, y1.r) &&
         (!check || emptyDisk(x1, y1.r));
       if (!valid)

@@ -92,16 +92,33 @@ void bernsteinWithDerivatives(int p, double t, double* out)
 
 double BernsteinPoly::operator()(double t) const
 {
-  std::vector<double> b = c;
+  // de Casteljau in a stack buffer: this is the innermost loop of every footpoint query.
   const int n = degree();
+  if (n < 0)
+  {
+    return 0.0;
+  }
+  double stack[128];
+  std::vector<double> heap;
+  double* b = stack;
+  if (n >= 128)
+  {
+    heap = c;
+    b = heap.data();
+  }
+  else
+  {
+    std::copy(c.begin(), c.end(), b);
+  }
+  const double s = 1.0 - t;
   for (int r = 1; r <= n; ++r)
   {
     for (int i = 0; i <= n - r; ++i)
     {
-      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+      b[i] = s * b[i] + t * b[i + 1];
     }
   }
-  return b.empty() ? 0.0 : b[0];
+  return b[0];
 }
 
 BernsteinPoly BernsteinPoly::derivative() const

@@ -1,0 +1,135 @@
+// Benchmark of the 2D MAT (not a test): time, points, segments, branch points and the
+// verified error per catalogue shape and step setting, then scaling with the number of
+// boundary entities (polygons and multi-span NURBS).
+//
+//   exactmat_bench_mat2d [--quick]
+#include "mat2d/Tracer.h"
+#include "mat2d/Verification.h"
+#include "shapes/Catalogue.h"
+#include "shapes/Primitives.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace exactmat;
+
+namespace
+{
+struct Result
+{
+  double ms = 0.0;
+  int points = 0, segments = 0, branches = 0;
+  double error = 0.0;
+};
+
+Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& options, int repeats)
+{
+  const Boundary2D b = Boundary2D::build(curvePieces(curves));
+  const Generators g(b);
+  Result r;
+  r.ms = 1e300;
+  MedialGraph graph;
+  for (int k = 0; k < repeats; ++k)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    graph = computeMAT2D(g, options);
+    r.ms = std::min(r.ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  r.points = graph.pointCount();
+  r.segments = static_cast<int>(graph.segments.size());
+  r.branches = graph.count(MedialPointType::Branch);
+  r.error = verifyMAT2D(g, graph).maxDistanceError;
+  return r;
+}
+
+std::vector<NurbsCurve> polygon(int n)
+{
+  // A regular n-gon whose corners alternate between radius 1 and 0.97: a convex polygon
+  // for small n, reflex corners and many branch points for large n.
+  Vec3List c;
+  for (int k = 0; k < n; ++k)
+  {
+    const double r = (k % 2) ? 0.97 : 1.0;
+    c.push_back(Vec3(r * std::cos(2 * M_PI * k / n), r * std::sin(2 * M_PI * k / n), 0));
+  }
+  return makePolygon(c);
+}
+
+std::vector<NurbsCurve> wavyNurbs(int spans)
+{
+  // One closed cubic B-spline with `spans` Bézier spans and spans/8 lobes.
+  const int p = 3, lobes = std::max(2, spans / 8);
+  Vec3List pts;
+  for (int i = 0; i < spans; ++i)
+  {
+    const double t = 2 * M_PI * i / spans, r = 1.0 + 0.15 * std::cos(lobes * t);
+    pts.push_back(Vec3(r * std::cos(t), r * std::sin(t), 0));
+  }
+  for (int i = 0; i < p; ++i)
+    pts.push_back(pts[i]);
+  KnotVector k(pts.size() + p + 1);
+  for (size_t i = 0; i < k.size(); ++i)
+    k[i] = static_cast<double>(i);
+  return { NurbsCurve(p, k, pts) };
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int repeats = quick ? 1 : 5;
+  struct Mode
+  {
+    const char* name;
+    MAT2DOptions options;
+  };
+  std::vector<Mode> modes(3);
+  modes[0].name = "adaptive 1e-4";
+  modes[1].name = "adaptive 1e-6";
+  modes[1].options.tolerance = 1e-6;
+  modes[2].name = "fixed 1e-3/1e-2";
+  modes[2].options.fixedStep = true;
+
+  std::printf("## 2D MAT per catalogue shape (best of %d runs, one core)\n\n", repeats);
+  std::printf("| shape | mode | time (ms) | points | segments | branch points | verified error |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|\n");
+  for (const std::string& name : catalogueNames())
+  {
+    const Shape s = makeShape(name);
+    if (s.dimension != 2)
+      continue;
+    for (const Mode& m : modes)
+    {
+      const Result r = measure(s.curves, m.options, repeats);
+      std::printf("| %s | %s | %.2f | %d | %d | %d | %.1e |\n", name.c_str(), m.name, r.ms, r.points,
+        r.segments, r.branches, r.error);
+    }
+  }
+
+  std::printf("\n## Scaling with the number of boundary entities (adaptive 1e-4)\n\n");
+  std::printf("| boundary | entities | time (ms) | points | segments | ms per segment | exponent |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+  const std::vector<int> sizes = quick ? std::vector<int>{ 10, 100, 1000 }
+                                       : std::vector<int>{ 10, 30, 100, 300, 1000, 3000, 10000 };
+  for (int family = 0; family < 2; ++family)
+  {
+    double lastMs = 0.0, lastN = 0.0;
+    for (int n : sizes)
+    {
+      const auto curves = family == 0 ? polygon(n) : wavyNurbs(n);
+      const Result r = measure(curves, MAT2DOptions(), n >= 3000 ? 1 : repeats);
+      const double exponent = lastMs > 0 ? std::log(r.ms / lastMs) / std::log(n / lastN) : 0.0;
+      std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s |\n", family == 0 ? "polygon" : "cubic NURBS spans", n,
+        r.ms, r.points, r.segments, r.ms / std::max(1, r.segments),
+        lastMs > 0 ? std::to_string(exponent).substr(0, 4).c_str() : "");
+      std::fflush(stdout);
+      lastMs = r.ms;
+      lastN = n;
+    }
+  }
+  return 0;
+}
