@@ -106,10 +106,11 @@ double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, dou
   return t;
 }
 
-// Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) by Illinois.
+// Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) by Illinois, to a
+// width of 1e-12: polishCurve's Newton steps on the distance itself finish the job.
 double bracketRoot(const BernsteinPoly& g, double a, double b, double ga, double gb)
 {
-  for (int it = 0; it < 200 && b - a > 1e-17; ++it)
+  for (int it = 0; it < 100 && b - a > 1e-12; ++it)
   {
     double m = (a * gb - b * ga) / (gb - ga);
     if (!(m > a && m < b))
@@ -159,7 +160,8 @@ struct RootFinder
     {
       return;
     }
-    const double ga = g(a), gb = g(b);
+    // The end values of the restricted polynomial are its first and last coefficients.
+    const double ga = local.c.front(), gb = local.c.back();
     if (changes == 1 && ga < -zero && gb > zero)
     {
       minima.push_back(bracketRoot(g, a, b, ga, gb));

@@ -700,47 +700,53 @@ void Tracer::trace(const Pending& p)
           accepted = true; // restart the outer loop from the checkpoint
           break;
         }
-        // Bisection between the last valid point (y) and this one for the branch point.
+        // Bisection between the last valid point (y) and this one for the branch point:
+        // coarse first, then polished exactly with the third generator; only if that
+        // fails is the bisection carried on to full precision.
         double lo = 0.0, hi = 1.0;
         BisectorState yb = y;
-        for (int it = 0; it < 60; ++it)
-        {
-          const double mid = 0.5 * (lo + hi);
-          BisectorState ym{ y.sa + mid * (y1.sa - y.sa), y.sb + mid * (y1.sb - y.sb), y.r + mid * (y1.r - y.r) };
-          if (!B.correct(ym, fixed == 2 ? 2 : fixed, solveTol))
+        auto bisect = [&](double precision) {
+          for (int it = 0; it < 60 && (hi - lo) * (x1 - x0).norm() >= precision; ++it)
           {
-            hi = mid;
-            continue;
+            const double mid = 0.5 * (lo + hi);
+            BisectorState ym{ y.sa + mid * (y1.sa - y.sa), y.sb + mid * (y1.sb - y.sb), y.r + mid * (y1.r - y.r) };
+            if (!B.correct(ym, fixed, solveTol))
+            {
+              hi = mid;
+              continue;
+            }
+            const Vec2 xm = B.point(ym);
+            if (curvatureOk(a.g, ym.sa, ym.r) && curvatureOk(b.g, ym.sb, ym.r) && emptyDisk(xm, ym.r))
+            {
+              lo = mid;
+              yb = ym;
+            }
+            else
+              hi = mid;
           }
-          const Vec2 xm = B.point(ym);
-          if (curvatureOk(a.g, ym.sa, ym.r) && curvatureOk(b.g, ym.sb, ym.r) && emptyDisk(xm, ym.r))
-          {
-            lo = mid;
-            yb = ym;
-          }
-          else
-            hi = mid;
-          if ((hi - lo) * (x1 - x0).norm() < 1e-13 * L)
-            break;
-        }
-        // Polish with the third generator found at the bisected point.
-        {
+        };
+        auto polish = [&]() {
           const Vec2 xg = B.point(yb);
-          const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-8 * L);
+          const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-7 * L);
           const GeneratorPoint fa = G.evaluate(a.g, yb.sa), fb = G.evaluate(b.g, yb.sb);
           for (const BoundaryLocation& c : near)
           {
-            if ((c.point - fa.p).norm() < 1e-7 * L || (c.point - fb.p).norm() < 1e-7 * L ||
-              c.continuum)
+            if ((c.point - fa.p).norm() < 1e-7 * L || (c.point - fb.p).norm() < 1e-7 * L || c.continuum)
               continue;
             BisectorState yp = yb;
             double sc = c.s;
             if (polishBranchPoint(G, a.g, b.g, c.g, yp.sa, yp.sb, sc, yp.r, 1e-14 * L) &&
               yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9 && (B.point(yp) - xg).norm() < 1e-6 * L)
+            {
               yb = yp;
-            break;
+              return true;
+            }
           }
-        }
+          return false;
+        };
+        bisect(1e-8 * L);
+        if (!polish())
+          bisect(1e-13 * L);
         const Vec2 xb = B.point(yb);
         a.s = yb.sa;
         b.s = yb.sb;

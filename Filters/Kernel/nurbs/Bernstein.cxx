@@ -98,18 +98,8 @@ double BernsteinPoly::operator()(double t) const
   {
     return 0.0;
   }
-  double stack[128];
-  std::vector<double> heap;
-  double* b = stack;
-  if (n >= 128)
-  {
-    heap = c;
-    b = heap.data();
-  }
-  else
-  {
-    std::copy(c.begin(), c.end(), b);
-  }
+  double b[96];
+  std::copy(c.begin(), c.end(), b);
   const double s = 1.0 - t;
   for (int r = 1; r <= n; ++r)
   {
@@ -163,7 +153,7 @@ BernsteinPoly BernsteinPoly::elevatedTo(int m) const
 void BernsteinPoly::split(double t, BernsteinPoly& left, BernsteinPoly& right) const
 {
   const int n = degree();
-  std::vector<double> b = c;
+  InlineVector<96> b = c;
   left.c.assign(n + 1, 0.0);
   right.c.assign(n + 1, 0.0);
   left.c[0] = b[0];

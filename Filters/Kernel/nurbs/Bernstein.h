@@ -8,6 +8,8 @@
 /// whose coefficient sequence changes sign exactly once holds exactly one (Descartes' rule
 /// for the Bernstein basis). That turns "find every footpoint" into a bounded subdivision.
 
+#include "common/InlineVector.h"
+
 #include <cmath>
 #include <vector>
 
@@ -21,10 +23,10 @@ double binomial(int n, int k);
 /// `out` must hold 3·(p+1) doubles: values, then first, then second derivatives.
 void bernsteinWithDerivatives(int p, double t, double* out);
 
-/// A univariate polynomial Σ c_i B_{i,n}(t), n = c.size() − 1.
+/// A univariate polynomial Σ c_i B_{i,n}(t), n = c.size() − 1 (n ≤ 95).
 struct BernsteinPoly
 {
-  std::vector<double> c;
+  InlineVector<96> c;
 
   int degree() const { return static_cast<int>(c.size()) - 1; }
   double operator()(double t) const;
