@@ -285,6 +285,37 @@ std::vector<CurveFootpoint> curveFootpoints(
   return result;
 }
 
+namespace
+{
+bool negativeSomewhere(const BernsteinPoly& h, int depth)
+{
+  const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
+  if (*mn >= 0.0)
+    return false; // the coefficients bound h from below
+  if (h.c.front() < 0.0 || h.c.back() < 0.0)
+    return true; // an end of this piece is inside
+  if (depth >= 40)
+    return false;
+  BernsteinPoly left, right;
+  h.split(0.5, left, right);
+  if (left.c.back() < 0.0)
+    return true; // the midpoint is inside
+  return negativeSomewhere(left, depth + 1) || negativeSomewhere(right, depth + 1);
+}
+} // namespace
+
+bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius)
+{
+  if (!(radius > 0.0) || distanceToBox(curve.boundingBox(), query) >= radius)
+  {
+    return false;
+  }
+  const CurvePolys cp = curvePolys(curve, query);
+  BernsteinPoly h = cp.d[0] * cp.d[0] + cp.d[1] * cp.d[1] + cp.d[2] * cp.d[2];
+  h = h - (radius * radius) * (cp.w * cp.w);
+  return negativeSomewhere(h, 0);
+}
+
 CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query)
 {
   const std::vector<CurveFootpoint> fps = curveFootpoints(curve, query);

@@ -51,6 +51,13 @@ std::vector<CurveFootpoint> curveFootpoints(
 /// The global closest point of the curve (the first of curveFootpoints).
 CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query);
 
+/// True when some point of the curve lies strictly closer than `radius` to the query:
+/// decided by the sign of h(t) = |A(t) − P·w(t)|² − radius²·w(t)² (degree 2p), whose
+/// Bernstein coefficients bound it, with subdivision where they do not decide. Much cheaper
+/// than curveFootpoints when only emptiness of a disk matters. Subdivision stops at 2^-40,
+/// where the curve is within rounding of the circle: that counts as not closer.
+bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius);
+
 /// Every local minimum of |S(u,v) − P| on [0,1]² with distance ≤ maxDistance, interior
 /// and boundary, sorted by distance.
 std::vector<PatchFootpoint> patchFootpoints(

@@ -134,6 +134,18 @@ double Generators::distance(const Vec2& x) const
   return d;
 }
 
+bool Generators::anyCloserThan(const Vec2& x, double radius) const
+{
+  const Vec3 q(x.x(), x.y(), 0.0);
+  const auto& edges = Boundary->edges();
+  for (int e : Tree.candidatesWithin(q, radius))
+  {
+    if (curveComesWithin(edges[e].curve, q, radius))
+      return true;
+  }
+  return false;
+}
+
 std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double radius) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);

@@ -70,6 +70,10 @@ public:
   /// Distance from x to the whole boundary (exact, global).
   double distance(const Vec2& x) const;
 
+  /// True when some boundary point lies strictly inside the disk of `radius` about x:
+  /// the emptiness test of a maximal disk, exact and cheaper than distance().
+  bool anyCloserThan(const Vec2& x, double radius) const;
+
   /// Every footpoint of x within `radius` (local minima of the distance on the edges, and
   /// reflex corners whose normal cone contains the direction to x), merged where they
   /// coincide (a minimum at an edge's end belongs to the corner or vertex there).

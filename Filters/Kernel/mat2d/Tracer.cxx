@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <deque>
+#include <unordered_map>
 #include <limits>
 
 namespace exactmat
@@ -197,6 +198,11 @@ private:
   const double L;
   Coverage Cover;
   MedialGraph Graph;
+  /// Nodes by grid cell (cells of NodeCell·L), so finding a node near a point is O(1).
+  std::unordered_map<long long, std::vector<int>> NodeGrid;
+  static constexpr double NodeCell = 1e-5;
+  long long cellKey(long long i, long long j) const { return i * 73856093LL ^ j * 19349663LL; }
+  int SegmentsSinceProgress = 0;
   std::deque<Pending> Queue;
   double TotalMeasure = 1.0;
 };
@@ -209,7 +215,7 @@ BoundaryLocation Tracer::location(int g, double s) const
 
 bool Tracer::emptyDisk(const Vec2& x, double r) const
 {
-  return G.distance(x) >= r - (1e-10 * L + 1e-9 * r);
+  return !G.anyCloserThan(x, r - (1e-10 * L + 1e-9 * r));
 }
 
 bool Tracer::curvatureOk(int g, double s, double r) const
@@ -222,12 +228,31 @@ bool Tracer::curvatureOk(int g, double s, double r) const
 
 int Tracer::findNode(const Vec2& x, double tol) const
 {
-  for (size_t i = 0; i < Graph.nodes.size(); ++i)
+  // tol ≤ 1e-6·L < one cell: the 3×3 cells around x hold every candidate.
+  const double cell = NodeCell * L;
+  const long long ci = static_cast<long long>(std::floor(x.x() / cell));
+  const long long cj = static_cast<long long>(std::floor(x.y() / cell));
+  int best = -1;
+  double bestDistance = tol;
+  for (long long i = ci - 1; i <= ci + 1; ++i)
   {
-    if ((Graph.nodes[i].sample.x - x).norm() <= tol)
-      return static_cast<int>(i);
+    for (long long j = cj - 1; j <= cj + 1; ++j)
+    {
+      const auto it = NodeGrid.find(cellKey(i, j));
+      if (it == NodeGrid.end())
+        continue;
+      for (int n : it->second)
+      {
+        const double d = (Graph.nodes[n].sample.x - x).norm();
+        if (d <= bestDistance)
+        {
+          bestDistance = d;
+          best = n;
+        }
+      }
+    }
   }
-  return -1;
+  return best;
 }
 
 int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps)
@@ -243,7 +268,12 @@ int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<B
   n.type = type;
   n.footpoints = std::move(fps);
   Graph.nodes.push_back(std::move(n));
-  return static_cast<int>(Graph.nodes.size()) - 1;
+  const int id = static_cast<int>(Graph.nodes.size()) - 1;
+  const double cell = NodeCell * L;
+  NodeGrid[cellKey(static_cast<long long>(std::floor(x.x() / cell)),
+             static_cast<long long>(std::floor(x.y() / cell)))]
+    .push_back(id);
+  return id;
 }
 
 bool Tracer::stepAlong(int& g, double& s, int dir, double distance) const
@@ -871,8 +901,11 @@ void Tracer::startAt(int g, double s)
 
 void Tracer::reportProgress()
 {
-  if (O.progress)
-    O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
+  // Measuring the coverage costs O(boundary): do it about a hundred times per run.
+  if (!O.progress || ++SegmentsSinceProgress < std::max(1, G.size() / 100))
+    return;
+  SegmentsSinceProgress = 0;
+  O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
 }
 
 MedialGraph Tracer::run()
@@ -922,7 +955,8 @@ MedialGraph Tracer::run()
       fail("2D MAT: no segment could be started from boundary generator ", g);
     }
   }
-  reportProgress();
+  if (O.progress)
+    O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
   Graph.mergeJoints();
   return std::move(Graph);
 }
