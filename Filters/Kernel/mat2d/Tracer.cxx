@@ -673,6 +673,8 @@ void Tracer::trace(const Pending& p)
           ok = false;
       }
       Vec2 x1 = ok ? B.point(y1) : Vec2::Zero();
+      // Next step from the measured chord error (∝ h²), kept within [×0.2, ×2].
+      double resize = 0.5;
       if (ok && !O.fixedStep && !joining)
       {
         // Chord error: the true MAT point halfway against the chord's midpoint.
@@ -681,6 +683,7 @@ void Tracer::trace(const Pending& p)
         if (B.correct(ym, mid, solveTol))
         {
           const double err = (B.point(ym) - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
+          resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
           if (err > tolerance)
             ok = false;
         }
@@ -689,7 +692,7 @@ void Tracer::trace(const Pending& p)
       }
       if (!ok)
       {
-        h *= 0.5;
+        h *= std::min(resize, 0.5);
         if (h < 1e-14 * L)
         {
           if (closing)
@@ -826,7 +829,7 @@ void Tracer::trace(const Pending& p)
       }
       accepted = true;
       if (!O.fixedStep)
-        h = std::min(0.05 * L, h * 1.6);
+        h = std::min(0.05 * L, h * (joining ? 1.0 : resize));
     }
     if (!accepted)
     {
