@@ -48,27 +48,27 @@ Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& option
 
 std::vector<NurbsCurve> polygon(int n)
 {
-  // A regular n-gon whose corners alternate between radius 1 and 0.97: a convex polygon
-  // for small n, reflex corners and many branch points for large n.
+  // A strip whose top and bottom are saw-tooth lines with n/2 corners each (reflex and
+  // convex corners alternate): the MAT grows with n while every disk stays local.
+  const int teeth = std::max(2, n / 2);
   Vec3List c;
-  for (int k = 0; k < n; ++k)
-  {
-    const double r = (k % 2) ? 0.97 : 1.0;
-    c.push_back(Vec3(r * std::cos(2 * M_PI * k / n), r * std::sin(2 * M_PI * k / n), 0));
-  }
+  for (int k = 0; k < teeth; ++k)
+    c.push_back(Vec3(0.5 * k, (k % 2) ? -0.15 : 0.0, 0));
+  for (int k = teeth - 1; k >= 0; --k)
+    c.push_back(Vec3(0.5 * k, (k % 2) ? 1.15 : 1.0, 0));
   return makePolygon(c);
 }
 
 std::vector<NurbsCurve> wavyNurbs(int spans)
 {
-  // One closed cubic B-spline with `spans` Bézier spans and spans/8 lobes.
-  const int p = 3, lobes = std::max(2, spans / 8);
+  // One closed cubic B-spline with `spans` Bézier spans outlining a wavy strip (the control
+  // polygon runs along the top, then back along the bottom).
+  const int p = 3, half = std::max(4, spans / 2);
   Vec3List pts;
-  for (int i = 0; i < spans; ++i)
-  {
-    const double t = 2 * M_PI * i / spans, r = 1.0 + 0.15 * std::cos(lobes * t);
-    pts.push_back(Vec3(r * std::cos(t), r * std::sin(t), 0));
-  }
+  for (int i = 0; i < half; ++i)
+    pts.push_back(Vec3(0.5 * i, 0.12 * std::sin(1.3 * i), 0));
+  for (int i = half - 1; i >= 0; --i)
+    pts.push_back(Vec3(0.5 * i, 1.0 + 0.12 * std::sin(1.7 * i + 0.5), 0));
   for (int i = 0; i < p; ++i)
     pts.push_back(pts[i]);
   KnotVector k(pts.size() + p + 1);
@@ -123,7 +123,7 @@ int main(int argc, char* argv[])
       const auto curves = family == 0 ? polygon(n) : wavyNurbs(n);
       const Result r = measure(curves, MAT2DOptions(), n >= 3000 ? 1 : repeats);
       const double exponent = lastMs > 0 ? std::log(r.ms / lastMs) / std::log(n / lastN) : 0.0;
-      std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s |\n", family == 0 ? "polygon" : "cubic NURBS spans", n,
+      std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s |\n", family == 0 ? "saw-tooth strip (polygon)" : "wavy strip (cubic NURBS spans)", n,
         r.ms, r.points, r.segments, r.ms / std::max(1, r.segments),
         lastMs > 0 ? std::to_string(exponent).substr(0, 4).c_str() : "");
       std::fflush(stdout);

@@ -192,6 +192,23 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
     {
       const int g = GeneratorOfEdge[e];
       const GeneratorPoint gp = evaluate(g, f.t);
+      if (f.atEnd && !f.continuum)
+      {
+        // A one-sided minimum at a smooth junction is no footpoint when the neighbouring
+        // edge gets closer still beyond the junction.
+        const bool atStart = f.t <= 0.5;
+        const Generator& gen = List[g];
+        if ((atStart ? gen.startJunction : gen.endJunction) == VertexKind::Smooth)
+        {
+          const int n = atStart ? gen.prev : gen.next;
+          const GeneratorPoint np = evaluate(n, atStart ? 1.0 : 0.0);
+          // d|C − x|²/2 along the neighbour, relative: a minimum exactly at the junction
+          // has slope 0 up to rounding and stays.
+          const double slope = (np.p - x).dot(np.dp) / ((np.p - x).norm() * np.dp.norm() + 1e-300);
+          if (atStart ? slope > 1e-8 : slope < -1e-8)
+            continue;
+        }
+      }
       addUnique({ g, f.t, gp.p, gp.n, f.continuum });
     }
   }

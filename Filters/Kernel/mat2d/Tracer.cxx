@@ -4,8 +4,6 @@
 #include "mat2d/Bisector.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <deque>
 #include <unordered_map>
@@ -347,8 +345,6 @@ void Tracer::spawnWedges(int node)
     const BoundaryLocation b = normalised(f[(i + 1) % f.size()], -1);
     const bool aCovered = coveredAhead(a.g, a.s, +1);
     const bool bCovered = coveredAhead(b.g, b.s, -1);
-    if (std::getenv("EXACTMAT_DEBUG"))
-      std::fprintf(stderr, "wedge at node %d: a=(%d,%.6f) b=(%d,%.6f) covered %d %d\n", node, a.g, a.s, b.g, b.s, aCovered, bCovered);
     if (aCovered || bCovered)
       continue;
     Queue.push_back({ node, a, b });
@@ -662,8 +658,23 @@ void Tracer::trace(const Pending& p)
         (fixed == 0 ? y1.sa : y1.sb) = fixedValue;
       }
       const double solveTol = 1e-13 * L;
-      bool ok = B.correct(y1, fixed, solveTol) && y1.sa >= a.s - 1e-9 && y1.sb <= b.s + 1e-9 &&
-        y1.r >= 0.0;
+      bool ok = B.correct(y1, fixed, solveTol);
+      // The corrector may carry a front past its generator's end (onto the extrapolated
+      // curve): solve again with that front held at the end.
+      if (ok && fixed != 0 && y1.sa > 1.0 + ParamEps)
+      {
+        y1.sa = 1.0;
+        fixed = 0;
+        ok = B.correct(y1, fixed, solveTol);
+      }
+      if (ok && fixed != 1 && y1.sb < -ParamEps)
+      {
+        y1.sb = 0.0;
+        fixed = 1;
+        ok = B.correct(y1, fixed, solveTol);
+      }
+      ok = ok && y1.sa >= a.s - 1e-9 && y1.sb <= b.s + 1e-9 && y1.sa <= 1.0 + ParamEps &&
+        y1.sb >= -ParamEps && y1.r >= 0.0;
       if (ok && closing)
       {
         // Do not step past the LMPC: the segment ends at its centre.
@@ -838,10 +849,6 @@ void Tracer::trace(const Pending& p)
     }
   }
   seg.endNode = endNode;
-  if (std::getenv("EXACTMAT_DEBUG"))
-    std::fprintf(stderr, "segment %d->%d gens (%d..%d) (%d..%d) samples %zu from (%g %g) to (%g %g)\n",
-      seg.startNode, endNode, p.a.g, a.g, p.b.g, b.g, seg.samples.size(), seg.samples.front().x.x(),
-      seg.samples.front().x.y(), seg.samples.back().x.x(), seg.samples.back().x.y());
   Graph.segments.push_back(std::move(seg));
   const int sid = static_cast<int>(Graph.segments.size()) - 1;
   Graph.nodes[Graph.segments.back().startNode].segments.push_back(sid);
