@@ -1,6 +1,8 @@
 #include "Boundary2D.h"
 
+#include "common/Format.h"
 #include "common/InputError.h"
+#include "common/UnionFind.h"
 #include "geometry/Flatten.h"
 
 #include <algorithm>
@@ -45,33 +47,7 @@ std::string pieceName(const std::vector<CurvePiece>& pieces, size_t i)
   return e.name();
 }
 
-std::string format(const Vec3& p)
-{
-  std::ostringstream os;
-  os.precision(9);
-  os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return os.str();
-}
 
-struct UnionFind
-{
-  std::vector<int> parent;
-  explicit UnionFind(int n)
-    : parent(n)
-  {
-    std::iota(parent.begin(), parent.end(), 0);
-  }
-  int find(int a)
-  {
-    while (parent[a] != a)
-    {
-      parent[a] = parent[parent[a]];
-      a = parent[a];
-    }
-    return a;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // 16-point Gauss–Legendre on [0,1].
 const double GaussX[8] = { 0.0950125098376374, 0.2816035507792589, 0.4580167776572274,

@@ -1,6 +1,8 @@
 #include "Boundary3D.h"
 
+#include "common/Format.h"
 #include "common/InputError.h"
+#include "common/UnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,13 +25,6 @@ std::string Face3D::name() const
 
 namespace
 {
-std::string format(const Vec3& p)
-{
-  std::ostringstream os;
-  os.precision(9);
-  os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return os.str();
-}
 
 // Gauss–Legendre, 8 points on [0,1].
 const double GX[8] = { 0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
@@ -68,25 +63,6 @@ TriangleNet mirrored(const TriangleNet& t)
   return m;
 }
 
-struct UnionFind
-{
-  std::vector<int> parent;
-  explicit UnionFind(int n)
-    : parent(n)
-  {
-    std::iota(parent.begin(), parent.end(), 0);
-  }
-  int find(int a)
-  {
-    while (parent[a] != a)
-    {
-      parent[a] = parent[parent[a]];
-      a = parent[a];
-    }
-    return a;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // Merges points closer than tol; returns a representative id per point.
 std::vector<int> mergePoints(const Vec3List& pts, double tol)

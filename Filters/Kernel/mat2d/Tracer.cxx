@@ -468,6 +468,16 @@ void Tracer::trace(const Pending& p)
     double kappa = 0.0;
     Stretch stretch;
   } cache;
+  // Fixed-step mode overshot a branch point somewhere since the last check: go back to
+  // the checkpoint and check every step from there.
+  auto backtrack = [&]() {
+    a = good.a;
+    b = good.b;
+    y = good.y;
+    seg.samples.resize(good.samples);
+    Cover.undo(good.coverage);
+    checkEveryStep = true;
+  };
   int endNode = -1;
   auto finish = [&](int node) {
     endNode = node;
@@ -571,13 +581,7 @@ void Tracer::trace(const Pending& p)
       }
       if (chordOk && !checkEveryStep && sinceCheck > 0 && !emptyDisk(x0, y.r))
       {
-        // Fixed-step mode: a branch point was passed since the last check.
-        a = good.a;
-        b = good.b;
-        y = good.y;
-        seg.samples.resize(good.samples);
-        Cover.undo(good.coverage);
-        checkEveryStep = true;
+        backtrack(); // fixed-step mode: a branch point was passed since the last check
         continue;
       }
       if (chordOk)
@@ -733,14 +737,7 @@ void Tracer::trace(const Pending& p)
       {
         if (!checkEveryStep)
         {
-          // Fixed-step mode overshot somewhere since the last check: go back and check
-          // every step from there.
-          a = good.a;
-          b = good.b;
-          y = good.y;
-          seg.samples.resize(good.samples);
-          Cover.undo(good.coverage);
-          checkEveryStep = true;
+          backtrack();
           accepted = true; // restart the outer loop from the checkpoint
           break;
         }
