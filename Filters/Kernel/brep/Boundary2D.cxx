@@ -291,7 +291,7 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
 
 void Boundary2D::orientLoops()
 {
-  const double flatTol = 1e-7 * Diagonal;
+  const double flatTol = 1e-6 * Diagonal;
   std::vector<Vec3List> polys(Loops.size());
   for (size_t l = 0; l < Loops.size(); ++l)
   {
@@ -346,7 +346,7 @@ void Boundary2D::checkIntersections() const
     double minX, maxX;
   };
   std::vector<Segment> segs;
-  const double flatTol = 1e-7 * Diagonal;
+  const double flatTol = 1e-6 * Diagonal;
   for (size_t l = 0; l < Loops.size(); ++l)
   {
     const size_t first = segs.size();

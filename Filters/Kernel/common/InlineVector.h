@@ -19,6 +19,14 @@ class InlineVector
 public:
   InlineVector() = default;
   InlineVector(std::initializer_list<double> values) { assign(values.begin(), values.end()); }
+  // Copies move only the coefficients in use, not the whole capacity.
+  InlineVector(const InlineVector& other) { assign(other.begin(), other.end()); }
+  InlineVector& operator=(const InlineVector& other)
+  {
+    if (this != &other)
+      assign(other.begin(), other.end());
+    return *this;
+  }
 
   std::size_t size() const { return Size; }
   bool empty() const { return Size == 0; }
