@@ -46,36 +46,6 @@ Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& option
   return r;
 }
 
-std::vector<NurbsCurve> polygon(int n)
-{
-  // A strip whose top and bottom are saw-tooth lines with n/2 corners each (reflex and
-  // convex corners alternate): the MAT grows with n while every disk stays local.
-  const int teeth = std::max(2, n / 2);
-  Vec3List c;
-  for (int k = 0; k < teeth; ++k)
-    c.push_back(Vec3(0.5 * k, (k % 2) ? -0.15 : 0.0, 0));
-  for (int k = teeth - 1; k >= 0; --k)
-    c.push_back(Vec3(0.5 * k, (k % 2) ? 1.15 : 1.0, 0));
-  return makePolygon(c);
-}
-
-std::vector<NurbsCurve> wavyNurbs(int spans)
-{
-  // One closed cubic B-spline with `spans` Bézier spans outlining a wavy strip (the control
-  // polygon runs along the top, then back along the bottom).
-  const int p = 3, half = std::max(4, spans / 2);
-  Vec3List pts;
-  for (int i = 0; i < half; ++i)
-    pts.push_back(Vec3(0.5 * i, 0.12 * std::sin(1.3 * i), 0));
-  for (int i = half - 1; i >= 0; --i)
-    pts.push_back(Vec3(0.5 * i, 1.0 + 0.12 * std::sin(1.7 * i + 0.5), 0));
-  for (int i = 0; i < p; ++i)
-    pts.push_back(pts[i]);
-  KnotVector k(pts.size() + p + 1);
-  for (size_t i = 0; i < k.size(); ++i)
-    k[i] = static_cast<double>(i);
-  return { NurbsCurve(p, k, pts) };
-}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -120,7 +90,7 @@ int main(int argc, char* argv[])
     double lastMs = 0.0, lastN = 0.0;
     for (int n : sizes)
     {
-      const auto curves = family == 0 ? polygon(n) : wavyNurbs(n);
+      const auto curves = family == 0 ? makeSawToothStrip(n) : std::vector<NurbsCurve>{ makeWavyStrip(n) };
       const Result r = measure(curves, MAT2DOptions(), n >= 3000 ? 1 : repeats);
       const double exponent = lastMs > 0 ? std::log(r.ms / lastMs) / std::log(n / lastN) : 0.0;
       std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s |\n", family == 0 ? "saw-tooth strip (polygon)" : "wavy strip (cubic NURBS spans)", n,

@@ -213,18 +213,7 @@ TEST(MAT2D, LongWavyNURBSStrip)
   // footpoint. Every span count must give a verified MAT with the boundary covered once.
   for (int spans : { 60, 80, 300 })
   {
-    const int p = 3, half = spans / 2;
-    Vec3List pts;
-    for (int i = 0; i < half; ++i)
-      pts.push_back(Vec3(0.5 * i, 0.12 * std::sin(1.3 * i), 0));
-    for (int i = half - 1; i >= 0; --i)
-      pts.push_back(Vec3(0.5 * i, 1.0 + 0.12 * std::sin(1.7 * i + 0.5), 0));
-    for (int i = 0; i < p; ++i)
-      pts.push_back(pts[i]);
-    KnotVector k(pts.size() + p + 1);
-    for (size_t i = 0; i < k.size(); ++i)
-      k[i] = static_cast<double>(i);
-    expectVerified(run({ NurbsCurve(p, k, pts) }), "wavy strip " + std::to_string(spans));
+    expectVerified(run({ makeWavyStrip(spans) }), "wavy strip " + std::to_string(spans));
   }
 }
 

@@ -133,30 +133,24 @@ class PythonPackage(unittest.TestCase):
         with self.assertRaisesRegex(exactmat.ExactMATError, "surface cells"):
             errors.check()
 
-    def test_mat2d_defaults_equal_the_paraview_xml(self):
-        xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", "MAT2DFilter.xml")
-        proxy = ET.parse(xml).getroot().find(".//SourceProxy[@name='MAT2DFilter']")
-        mat = vtkMAT2DFilter()
+    def check_xml_defaults(self, xml_name, proxy_name, instance, expected_count):
+        """Every numeric property's default in the ParaView XML equals the C++ getter's."""
+        xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", xml_name)
+        proxy = ET.parse(xml).getroot().find(f".//SourceProxy[@name='{proxy_name}']")
         checked = 0
         for prop in proxy:
             if prop.tag in ("DoubleVectorProperty", "IntVectorProperty"):
                 name = prop.get("name")
-                self.assertEqual(float(getattr(mat, "Get" + name)()), float(prop.get("default_values")), name)
+                self.assertEqual(float(getattr(instance, "Get" + name)()), float(prop.get("default_values")), name)
                 checked += 1
-        self.assertEqual(checked, 5)
+        self.assertEqual(checked, expected_count)
+        return proxy
+
+    def test_mat2d_defaults_equal_the_paraview_xml(self):
+        self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 5)
 
     def test_defaults_equal_the_paraview_xml(self):
-        xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", "NURBSSource.xml")
-        proxy = ET.parse(xml).getroot().find(".//SourceProxy[@name='NURBSSource']")
-        source = vtkNURBSSource()
-        checked = 0
-        for prop in proxy:
-            if prop.tag in ("DoubleVectorProperty", "IntVectorProperty"):
-                name = prop.get("name")
-                default = float(prop.get("default_values"))
-                self.assertEqual(getattr(source, "Get" + name)(), default, name)
-                checked += 1
-        self.assertEqual(checked, 9)
+        proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 9)
         entries = proxy.findall(".//EnumerationDomain/Entry")
         self.assertEqual(len(entries), vtkNURBSSource.GetNumberOfCatalogueShapes())
         for entry in entries:

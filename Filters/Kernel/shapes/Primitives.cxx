@@ -92,4 +92,33 @@ NurbsSurface makeRevolution(const NurbsCurve& profile)
   return NurbsSurface(profile.degree(), 2, profile.knots(), circle.knots(), n, m, std::move(net));
 }
 
+std::vector<NurbsCurve> makeSawToothStrip(int corners)
+{
+  const int teeth = std::max(2, corners / 2);
+  Vec3List c;
+  for (int k = 0; k < teeth; ++k)
+    c.push_back(Vec3(0.5 * k, (k % 2) ? -0.15 : 0.0, 0));
+  for (int k = teeth - 1; k >= 0; --k)
+    c.push_back(Vec3(0.5 * k, (k % 2) ? 1.15 : 1.0, 0));
+  return makePolygon(c);
+}
+
+NurbsCurve makeWavyStrip(int spans)
+{
+  // The control polygon runs along the top, then back along the bottom; the first three
+  // points repeated with uniform knots close it with C² continuity.
+  const int p = 3, half = std::max(4, spans / 2);
+  Vec3List pts;
+  for (int i = 0; i < half; ++i)
+    pts.push_back(Vec3(0.5 * i, 0.12 * std::sin(1.3 * i), 0));
+  for (int i = half - 1; i >= 0; --i)
+    pts.push_back(Vec3(0.5 * i, 1.0 + 0.12 * std::sin(1.7 * i + 0.5), 0));
+  for (int i = 0; i < p; ++i)
+    pts.push_back(pts[i]);
+  KnotVector k(pts.size() + p + 1);
+  for (size_t i = 0; i < k.size(); ++i)
+    k[i] = static_cast<double>(i);
+  return NurbsCurve(p, k, pts);
+}
+
 } // namespace exactmat

@@ -30,4 +30,11 @@ NurbsSurface makeExtrusion(const NurbsCurve& profile, const Vec3& direction, dou
 /// follows the profile, v the full circle (rational quadratic, 4 spans).
 NurbsSurface makeRevolution(const NurbsCurve& profile);
 
+/// Scaling families (benchmarks and tests): boundaries with local features whose entity
+/// count grows with n.
+/// A strip whose top and bottom are saw-tooth polylines with about n corners in all.
+std::vector<NurbsCurve> makeSawToothStrip(int corners);
+/// One closed cubic B-spline with `spans` Bézier spans outlining a wavy strip.
+NurbsCurve makeWavyStrip(int spans);
+
 } // namespace exactmat
