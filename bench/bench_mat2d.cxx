@@ -24,6 +24,7 @@ struct Result
   double ms = 0.0;
   int points = 0, segments = 0, branches = 0;
   double error = 0.0;
+  bool topology = false; ///< boundary covered once by the footpoints and cycles = holes
 };
 
 Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& options, int repeats)
@@ -42,7 +43,10 @@ Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& option
   r.points = graph.pointCount();
   r.segments = static_cast<int>(graph.segments.size());
   r.branches = graph.count(MedialPointType::Branch);
-  r.error = verifyMAT2D(g, graph).maxDistanceError;
+  const MAT2DVerification v = verifyMAT2D(g, graph);
+  r.error = v.maxDistanceError;
+  r.topology = v.uncovered <= 1e-6 && v.coveredTwice <= 1e-6 && v.cycles == v.holes &&
+    v.footpointShortfalls == 0;
   return r;
 }
 
@@ -65,8 +69,8 @@ int main(int argc, char* argv[])
   modes[2].options.fixedStep = true;
 
   std::printf("## 2D MAT per catalogue shape (best of %d runs, one core)\n\n", repeats);
-  std::printf("| shape | mode | time (ms) | points | segments | branch points | verified error |\n");
-  std::printf("|---|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| shape | mode | time (ms) | points | segments | branch points | verified error | coverage, cycles |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|---|\n");
   for (const std::string& name : catalogueNames())
   {
     const Shape s = makeShape(name);
@@ -75,14 +79,14 @@ int main(int argc, char* argv[])
     for (const Mode& m : modes)
     {
       const Result r = measure(s.curves, m.options, repeats);
-      std::printf("| %s | %s | %.2f | %d | %d | %d | %.1e |\n", name.c_str(), m.name, r.ms, r.points,
-        r.segments, r.branches, r.error);
+      std::printf("| %s | %s | %.2f | %d | %d | %d | %.1e | %s |\n", name.c_str(), m.name, r.ms, r.points,
+        r.segments, r.branches, r.error, r.topology ? "ok" : "WRONG");
     }
   }
 
   std::printf("\n## Scaling with the number of boundary entities (adaptive 1e-4)\n\n");
-  std::printf("| boundary | entities | time (ms) | points | segments | ms per segment | exponent |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| boundary | entities | time (ms) | points | segments | ms per segment | exponent | verified error | coverage, cycles |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---|\n");
   const std::vector<int> sizes = quick ? std::vector<int>{ 10, 100, 1000 }
                                        : std::vector<int>{ 10, 30, 100, 300, 1000, 3000, 10000 };
   for (int family = 0; family < 2; ++family)
@@ -93,9 +97,10 @@ int main(int argc, char* argv[])
       const auto curves = family == 0 ? makeSawToothStrip(n) : std::vector<NurbsCurve>{ makeWavyStrip(n) };
       const Result r = measure(curves, MAT2DOptions(), n >= 3000 ? 1 : repeats);
       const double exponent = lastMs > 0 ? std::log(r.ms / lastMs) / std::log(n / lastN) : 0.0;
-      std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s |\n", family == 0 ? "saw-tooth strip (polygon)" : "wavy strip (cubic NURBS spans)", n,
-        r.ms, r.points, r.segments, r.ms / std::max(1, r.segments),
-        lastMs > 0 ? std::to_string(exponent).substr(0, 4).c_str() : "");
+      std::printf("| %s | %d | %.1f | %d | %d | %.3f | %s | %.1e | %s |\n",
+        family == 0 ? "saw-tooth strip (polygon)" : "wavy strip (cubic NURBS spans)", n, r.ms, r.points,
+        r.segments, r.ms / std::max(1, r.segments),
+        lastMs > 0 ? std::to_string(exponent).substr(0, 4).c_str() : "", r.error, r.topology ? "ok" : "WRONG");
       std::fflush(stdout);
       lastMs = r.ms;
       lastN = n;

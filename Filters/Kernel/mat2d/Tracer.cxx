@@ -697,10 +697,19 @@ void Tracer::trace(const Pending& p)
         const int mid = fixed;
         if (B.correct(ym, mid, solveTol))
         {
-          const double err = (B.point(ym) - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
+          const Vec2 xm = B.point(ym);
+          const double err = (xm - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
           resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
           if (err > tolerance)
             ok = false;
+          // A boundary feature whose MAT interrupts this pair's only between the two ends
+          // of the step would go unseen by checks at the ends: check halfway too, and
+          // take a shorter step when that disk is not empty.
+          else if (!emptyDisk(xm, ym.r))
+          {
+            ok = false;
+            resize = 0.5;
+          }
         }
         else
           ok = false;
