@@ -314,8 +314,11 @@ int run2D(const Arguments& a)
   if (!a.png.empty())
   {
     std::string error;
-    const std::string title = "MAT of " + label + ": " + std::to_string(mat->GetNumberOfSegments()) +
-      " segments, " + std::to_string(counts[1]) + " branch points";
+    auto count = [](int n, const char* noun) {
+      return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+    };
+    const std::string title = "MAT of " + label + ": " + count(mat->GetNumberOfSegments(), "segment") +
+      ", " + count(counts[1], "branch point");
     if (!writeMATPicture(boundary, out, a.png, title, error))
     {
       std::cerr << "exactmat: error: " << error << "\n";
