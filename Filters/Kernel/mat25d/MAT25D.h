@@ -1,0 +1,66 @@
+#pragma once
+/// @file MAT25D.h
+/// @brief The MAT of an extruded or revolved solid from its profile's 2D MAT (thesis
+/// ch. 5): no tracing in 3D, every entity is a transformed 2D one.
+///
+/// For a profile point p with 2D medial radius r, the ball of radius r about T_τ(p) touches
+/// the sides where the disk touched the profile (the normals sweep with the profile,
+/// Theorem B.1) and the start face when τ = capSpan(p, r) (§5.5.1). Hence, with S the span:
+/// * junctions: branch points at τ = capSpan and S − capSpan (four or more touchpoints;
+///   Prop. 5.1: there are no others);
+/// * seams: normal points at the same spans (three touchpoints), and the "fourth seam" at
+///   each branch point: its ruling/parallel between the two junctions (Prop. 5.2);
+/// * skeletal edges: the ruling/parallel of each centre of curvature of an LMPC point;
+/// * seam ends at convex vertices (radius 0) and on skeletal edges;
+/// * swept sheets: each profile MAT segment swept between its two seams;
+/// * profile sheets, between a profile face and one side: over the segment from a
+///   footpoint F to its MAT point x, the point F + t(x − F) has distance t·r to the
+///   boundary, so the sheet point is T_τ(F + t(x − F)) with τ = capSpan(·, t·r).
+/// A 360° revolution has no profile faces: the revolved 2D MAT, with no seams from faces.
+///
+/// The method needs the two profile faces at least one maximal-disk diameter apart
+/// (span ≥ 2·capSpan at every profile MAT point, §5.5.1); otherwise an InputError names
+/// Rmax (or the largest capSpan) and the span. Equality gives degenerate junctions and
+/// seams, built by the same code (points where both seams meet carry one more touchpoint).
+///
+/// Governor ids (MedialElement::governors): e ∈ [0, E) the side swept by profile edge e
+/// (Boundary2D edge index), E the start profile face, E + 1 the end one, E + 2 + v the
+/// reflex edge swept by profile vertex v.
+
+#include "mat25d/MedialComplex.h"
+#include "mat25d/Sweep.h"
+#include "mat2d/MedialGraph.h"
+
+#include <functional>
+
+namespace exactmat
+{
+
+struct MAT25DOptions
+{
+  /// Target spacing of sheet vertices across the sweep and from boundary to seam, as a
+  /// fraction of the solid's size. Every vertex is an exact MAT point whatever the spacing.
+  double sheetResolution = 0.02;
+  /// Called with the fraction done (0..1).
+  std::function<void(double)> progress;
+};
+
+/// Builds the 3D MAT of the profile swept by `sweep` from the profile's 2D MAT. Throws
+/// InputError when the span is too short for the method (see above) or the 2D MAT is
+/// empty.
+MedialComplex computeMAT25D(const Generators& profile, const MedialGraph& profileMAT,
+  const SweepMap& sweep, const MAT25DOptions& options = {});
+
+/// The largest capSpan over the profile MAT (the half-span the method needs), and where.
+struct RequiredSpan
+{
+  double capSpan = 0.0;
+  double radius = 0.0; ///< the disk there
+  Vec2 at = Vec2::Zero();
+};
+RequiredSpan requiredHalfSpan(const MedialGraph& profileMAT, const SweepMap& sweep);
+
+/// Governor id of a profile generator (its side face, or the reflex edge of a corner).
+int governorOfGenerator(const Generators& profile, int g);
+
+} // namespace exactmat

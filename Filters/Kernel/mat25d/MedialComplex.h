@@ -1,0 +1,74 @@
+#pragma once
+/// @file MedialComplex.h
+/// @brief The MAT of a solid as a cell complex (thesis §3.4): junction points, seams,
+/// skeletal edges (curves) and medial sheets (triangulated surfaces), every point with its
+/// radius and classification.
+
+#include "common/Types.h"
+
+#include <array>
+#include <vector>
+
+namespace exactmat
+{
+
+/// How a medial point of a solid touches the boundary (thesis §3.4).
+enum class MedialPoint3DType
+{
+  Sheet = 0,        ///< two touchpoints: inside a sheet
+  Seam = 1,         ///< three: where three sheets meet
+  Junction = 2,     ///< four or more: where seams meet
+  SeamEnd = 3,      ///< where a seam ends: at a convex vertex of the solid (radius 0) or
+                    ///< on a skeletal edge
+  SkeletalEdge = 4, ///< one touchpoint of higher order: a centre of curvature of a point
+                    ///< of maximal curvature (the ball osculates the boundary)
+  ConvexEdge = 5,   ///< radius 0: a sheet's border on a convex edge of the solid
+  CircleCentre = 6  ///< the ball touches a whole circle (axis of a cylinder, torus core)
+};
+
+const char* toString(MedialPoint3DType type);
+
+enum class MedialElementType
+{
+  Junction = 0,      ///< a vertex
+  Seam = 1,          ///< a polyline
+  SkeletalEdge = 2,  ///< a polyline
+  CentreCurve = 3,   ///< a polyline of CircleCentre points
+  SweptSheet = 4,    ///< triangles: a profile MAT segment swept between its seams
+  ProfileSheet = 5   ///< triangles: between a profile face and one side (or reflex edge)
+};
+
+const char* toString(MedialElementType type);
+
+struct MedialPoint3D
+{
+  Vec3 x = Vec3::Zero();
+  double radius = 0.0;
+  MedialPoint3DType type = MedialPoint3DType::Sheet;
+  /// How many distinct touchpoints the ball has, by construction; 0 = not a finite count
+  /// (radius 0, or a whole curve of contact).
+  int contacts = 0;
+};
+
+struct MedialElement
+{
+  MedialElementType type = MedialElementType::Seam;
+  std::vector<int> points;                  ///< vertex / polyline point ids
+  std::vector<std::array<int, 3>> triangles; ///< sheets
+  /// The boundary entities the element is equidistant to (see MAT25D.h for the numbering).
+  std::vector<int> governors;
+  int profileSegment = -1; ///< the profile MAT segment (or node, for junctions) it comes from
+};
+
+struct MedialComplex
+{
+  std::vector<MedialPoint3D> points;
+  std::vector<MedialElement> elements;
+
+  int count(MedialElementType type) const;
+  int countPoints(MedialPoint3DType type) const;
+  int triangleCount() const;
+  double maximumRadius() const;
+};
+
+} // namespace exactmat

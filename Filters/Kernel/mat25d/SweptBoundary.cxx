@@ -1,0 +1,129 @@
+#include "SweptBoundary.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace exactmat
+{
+
+SweptBoundary::SweptBoundary(const Boundary2D& profile, const SweepMap& sweep)
+  : Profile(&profile)
+  , Map(&sweep)
+  , Sides(sweep.sideFaces())
+{
+  std::vector<Box3> boxes;
+  Box3 all;
+  for (const PatchPiece& p : Sides)
+  {
+    boxes.push_back(p.patch.boundingBox());
+    all.extend(boxes.back());
+  }
+  SideTree.build(boxes);
+  Size = all.diagonal().norm();
+  boxes.clear();
+  for (const Edge2D& e : profile.edges())
+    boxes.push_back(e.curve.boundingBox());
+  EdgeTree.build(boxes);
+}
+
+bool SweptBoundary::insideProfile(const Vec2& p) const
+{
+  // The nearest point of the exact boundary decides: inside when p lies on the material
+  // side of the edge's normal there; at a vertex, inside exactly when it is reflex (a
+  // point whose nearest boundary point is a convex vertex lies outside).
+  const Vec3 q(p.x(), p.y(), 0.0);
+  const std::vector<Edge2D>& edges = Profile->edges();
+  CurveFootpoint best;
+  double distance = 0.0;
+  const int e = EdgeTree.nearest(q,
+    [&](int i) { return closestPoint(edges[i].curve, q).distance; }, &distance);
+  if (e < 0)
+    return false;
+  best = closestPoint(edges[e].curve, q);
+  if (best.distance <= 1e-14 * Size)
+    return true;
+  const double tol = 1e-12;
+  if (best.t > tol && best.t < 1.0 - tol)
+  {
+    const Vec3 d = edges[e].curve.derivatives(best.t).d1;
+    const Vec2 inward(-d.y(), d.x());
+    return inward.dot(Vec2(p.x() - best.point.x(), p.y() - best.point.y())) > 0.0;
+  }
+  const int v = best.t <= tol ? edges[e].startVertex : edges[e].endVertex;
+  const Vertex2D& vertex = Profile->vertices()[v];
+  if (vertex.kind != VertexKind::Smooth)
+    return vertex.kind == VertexKind::Reflex;
+  const Vec3 d = edges[e].curve.endTangent(best.t > 0.5);
+  const Vec2 inward(-d.y(), d.x());
+  return inward.dot(Vec2(p.x() - best.point.x(), p.y() - best.point.y())) > 0.0;
+}
+
+double SweptBoundary::faceDistance(int face, const Vec3& x, Vec3* foot) const
+{
+  if (Map->closed())
+    return Unbounded;
+  Vec2 p;
+  double d = 0.0;
+  if (!Map->projectOnProfileFace(face, x, p, d) || !insideProfile(p))
+    return Unbounded;
+  if (foot)
+    *foot = Map->place(p, face == 0 ? 0.0 : Map->span());
+  return d;
+}
+
+double SweptBoundary::distance(const Vec3& x) const
+{
+  double d = Unbounded;
+  SideTree.nearest(x, [&](int i) { return closestPoint(Sides[i].patch, x).distance; }, &d);
+  for (int face = 0; face < 2; ++face)
+    d = std::min(d, faceDistance(face, x, nullptr));
+  return d;
+}
+
+Vec3List SweptBoundary::touchpoints(const Vec3& x, double radius) const
+{
+  struct Minimum
+  {
+    Vec3 point;
+    double distance;
+    bool oneSided;
+  };
+  std::vector<Minimum> minima;
+  for (int i : SideTree.candidatesWithin(x, radius))
+  {
+    for (const PatchFootpoint& f : patchFootpoints(Sides[i].patch, x, radius))
+      minima.push_back({ f.point, f.distance, f.onBoundary });
+  }
+  for (int face = 0; face < 2; ++face)
+  {
+    Vec3 foot;
+    const double d = faceDistance(face, x, &foot);
+    if (d <= radius)
+      minima.push_back({ foot, d, false });
+  }
+  std::sort(minima.begin(), minima.end(),
+    [](const Minimum& a, const Minimum& b) { return a.distance < b.distance; });
+  Vec3List out;
+  const double merge = 1e-7 * Size;
+  for (const Minimum& m : minima)
+  {
+    bool keep = true;
+    for (const Minimum& other : minima)
+    {
+      // A border minimum with a nearer minimum next to it (on the neighbouring patch) is
+      // only the border of that patch, not a touchpoint of the solid.
+      if (m.oneSided && other.distance < m.distance - 1e-13 * Size &&
+        (other.point - m.point).norm() < 0.05 * std::max(m.distance, merge))
+      {
+        keep = false;
+      }
+    }
+    for (const Vec3& q : out)
+      keep = keep && (q - m.point).norm() > merge;
+    if (keep)
+      out.push_back(m.point);
+  }
+  return out;
+}
+
+} // namespace exactmat

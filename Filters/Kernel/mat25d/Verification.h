@@ -1,0 +1,34 @@
+#pragma once
+/// @file Verification.h
+/// @brief Checks the MAT of a swept solid against its exact boundary (DESIGN.md §4),
+/// independently of the construction: global distance = radius at every point, and the
+/// number of distinct touchpoints of every ball that has a finite number of them.
+
+#include "mat25d/MedialComplex.h"
+#include "mat25d/SweptBoundary.h"
+
+namespace exactmat
+{
+
+struct MAT25DVerification
+{
+  int points = 0;                ///< points checked
+  double maxDistanceError = 0.0; ///< max |distance(X, boundary) − r| / solid size
+  int worstPoint = -1;           ///< where that maximum is
+  int contactsChecked = 0;       ///< points whose touchpoints were counted
+  int contactMismatches = 0;     ///< of those, how many have another count
+  int firstMismatch = -1;        ///< the first such point
+  int firstMismatchCount = 0;    ///< and how many touchpoints it has
+
+  bool ok(double distanceTolerance) const
+  {
+    return maxDistanceError <= distanceTolerance && contactMismatches == 0;
+  }
+};
+
+/// Checks every `stride`-th point (1 = all). Touchpoints count within
+/// r·(1 + 1e-9) + 1e-9·size.
+MAT25DVerification verifyMAT25D(
+  const SweptBoundary& boundary, const MedialComplex& mat, int stride = 1);
+
+} // namespace exactmat
