@@ -24,6 +24,9 @@ namespace
 // of a footpoint, and a root cluster that has not separated by then is one footpoint.
 constexpr int MaxCurveDepth = 48;
 constexpr int MaxPatchDepth = 24;
+// From this depth on, a box whose Newton limit is a degenerate minimum is not split further.
+constexpr int DegenerateCheckDepth = 8;
+constexpr int MaxPatchBoxes = 200000;
 // Split a little off the middle: symmetric shapes put roots exactly at t = 1/2.
 constexpr double SplitAt = 0.4871;
 
@@ -400,10 +403,51 @@ Interval mul(Interval a, Interval b)
   return { *std::min_element(c, c + 4), *std::max_element(c, c + 4) };
 }
 
+// Solves [a b; b c]·(du, dv) = (fu, fv) for a symmetric 2×2 matrix, dropping eigen-
+// directions whose eigenvalue is negligible (least-squares step of minimum norm).
+bool pseudoSolve(double a, double b, double c, double fu, double fv, double& du, double& dv)
+{
+  const double mean = 0.5 * (a + c), diff = 0.5 * (a - c);
+  const double radius = std::hypot(diff, b);
+  const double l1 = mean + radius, l2 = mean - radius;
+  const double big = std::max(std::abs(l1), std::abs(l2));
+  if (!(big > 0.0) || !std::isfinite(big))
+  {
+    return false;
+  }
+  // Unit eigenvector of l1: (b, l1 − a) or (l1 − c, b), whichever is better conditioned.
+  Vec2 e1 = std::abs(b) + std::abs(l1 - a) >= std::abs(l1 - c) + std::abs(b) ? Vec2(b, l1 - a)
+                                                                              : Vec2(l1 - c, b);
+  if (e1.norm() == 0.0)
+  {
+    e1 = Vec2(1.0, 0.0);
+  }
+  e1.normalize();
+  const Vec2 e2(-e1.y(), e1.x());
+  const Vec2 f(fu, fv);
+  Vec2 step = Vec2::Zero();
+  if (std::abs(l1) > 1e-8 * big)
+  {
+    step += (e1.dot(f) / l1) * e1;
+  }
+  if (std::abs(l2) > 1e-8 * big)
+  {
+    step += (e2.dot(f) / l2) * e2;
+  }
+  du = step.x();
+  dv = step.y();
+  return true;
+}
+
 // Newton on (f_u, f_v) = ((S−P)·Su, (S−P)·Sv) from (u, v) kept in the box. Returns true when
 // it converged to a point inside the box (slightly enlarged) that is not a maximum/saddle.
+// Where the Hessian is singular (a curve of minima: a torus seen from its core circle, a
+// ball osculating along a principal direction) the step uses its pseudo-inverse, which
+// lands on the curve; `degenerate` then reports it.
+// With `clampToBox` the iterate is kept in the box instead of giving up when it leaves:
+// on a curve of minima the flat direction drifts.
 bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, double u0,
-  double u1, double v0, double v1)
+  double u1, double v0, double v1, bool* degenerate = nullptr, bool clampToBox = false)
 {
   const double mu = 1e-9 + 1e-6 * (u1 - u0), mv = 1e-9 + 1e-6 * (v1 - v0);
   for (int it = 0; it < 30; ++it)
@@ -414,14 +458,25 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
     const double a = s.su.squaredNorm() + r.dot(s.suu);
     const double b = s.su.dot(s.sv) + r.dot(s.suv);
     const double c = s.sv.squaredNorm() + r.dot(s.svv);
-    const double det = a * c - b * b;
-    if (!(std::abs(det) > 0.0))
+    // Stationary to rounding: done (a degenerate minimum converges only linearly, so the
+    // step test below may never pass there).
+    const double scale = r.norm() + 1e-300;
+    if (std::abs(fu) <= 1e-15 * scale * s.su.norm() && std::abs(fv) <= 1e-15 * scale * s.sv.norm())
+    {
+      break;
+    }
+    double du = 0.0, dv = 0.0;
+    if (!pseudoSolve(a, b, c, fu, fv, du, dv))
     {
       return false;
     }
-    const double du = (c * fu - b * fv) / det, dv = (a * fv - b * fu) / det;
     u -= du;
     v -= dv;
+    if (clampToBox)
+    {
+      u = std::min(u1, std::max(u0, u));
+      v = std::min(v1, std::max(v0, v));
+    }
     if (u < u0 - mu || u > u1 + mu || v < v0 - mv || v > v1 + mv)
     {
       return false;
@@ -430,7 +485,8 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
     {
       break;
     }
-    if (it == 29)
+    if (it == 29 && !(std::abs(fu) <= 1e-9 * scale * s.su.norm() &&
+                      std::abs(fv) <= 1e-9 * scale * s.sv.norm()))
     {
       return false;
     }
@@ -444,7 +500,12 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
   const double c = s.sv.squaredNorm() + r.dot(s.svv);
   // Keep minima (and degenerate, flat minima); drop saddles and maxima.
   const double tol = 1e-12 * (s.su.squaredNorm() + s.sv.squaredNorm());
-  return a + c >= -tol && a * c - b * b >= -tol * tol;
+  if (degenerate)
+  {
+    *degenerate = std::abs(a * c - b * b) <= 1e-8 * (a * a + c * c + b * b);
+  }
+  // (A degenerate minimum's determinant is zero up to rounding of a², b², c².)
+  return a + c >= -tol && a * c - b * b >= -std::max(tol * tol, 1e-12 * (a * a + b * b + c * c));
 }
 
 struct PatchSearch
@@ -454,6 +515,7 @@ struct PatchSearch
   double maxDistance;
   double zero;
   std::vector<PatchFootpoint> found;
+  int boxes = 0;
 
   void add(double u, double v)
   {
@@ -471,7 +533,10 @@ struct PatchSearch
   void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, double u0, double u1,
     double v0, double v1, int depth)
   {
-    if (gu.hasStrictSign(zero) || gv.hasStrictSign(zero))
+    // The bound on the work: a curve of stationary points that Newton cannot settle would
+    // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
+    // are searched separately and carry such curves where they end).
+    if (++boxes > MaxPatchBoxes || gu.hasStrictSign(zero) || gv.hasStrictSign(zero))
     {
       return;
     }
@@ -486,12 +551,23 @@ struct PatchSearch
     const Interval c = bounds(gv.derivativeU()), d = bounds(gv.derivativeV());
     const Interval ad = mul(a, d), bc = mul(b, c);
     const bool unique = (ad.lo - bc.hi > 0.0) || (ad.hi - bc.lo < 0.0);
-    if (unique || depth >= MaxPatchDepth)
+    if (unique || depth >= MaxPatchDepth || depth >= DegenerateCheckDepth)
     {
       double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
-      if (newtonPatch(patch, q, u, v, u0, u1, v0, v1))
+      bool degenerate = false;
+      const bool deep = depth >= DegenerateCheckDepth && !unique;
+      if (newtonPatch(patch, q, u, v, u0, u1, v0, v1, &degenerate, deep) &&
+        (unique || degenerate || depth >= MaxPatchDepth))
       {
+        // A box that still holds stationary points this deep and whose Newton limit is a
+        // degenerate minimum lies on a curve of minima: one point of it stands for the
+        // box (subdividing along the curve would cost 2^depth boxes).
+        const size_t before = found.size();
         add(u, v);
+        if (degenerate && !unique && found.size() > before)
+        {
+          found.back().continuum = true;
+        }
         return;
       }
       if (depth >= MaxPatchDepth)
@@ -523,7 +599,7 @@ std::vector<PatchFootpoint> patchFootpoints(
     return result;
   }
   const PatchPolys pp = patchPolys(patch, query);
-  PatchSearch search{ patch, query, maxDistance, pp.zero, {} };
+  PatchSearch search{ patch, query, maxDistance, pp.zero, {}, 0 };
   const bool flatU = pp.gu.maxAbs() <= pp.zero, flatV = pp.gv.maxAbs() <= pp.zero;
   if (flatU && flatV)
   {
@@ -592,8 +668,10 @@ std::vector<PatchFootpoint> patchFootpoints(
     bool seen = false;
     for (PatchFootpoint& g : unique)
     {
+      // Points of one degenerate minimum (found in neighbouring deep boxes) are one.
+      const double near = f.continuum && g.continuum ? 4.0 / (1 << DegenerateCheckDepth) : 1e-9;
       if ((f.point - g.point).norm() <= 1e-9 * (1.0 + diag) ||
-        (std::abs(f.u - g.u) < 1e-9 && std::abs(f.v - g.v) < 1e-9))
+        (std::abs(f.u - g.u) < near && std::abs(f.v - g.v) < near))
       {
         g.onBoundary = g.onBoundary && f.onBoundary;
         seen = true;

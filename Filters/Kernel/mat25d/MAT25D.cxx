@@ -143,10 +143,9 @@ private:
     const double t0 = W.capSpan(p, r), t1 = S - t0;
     if (t1 - t0 <= 1e-12 * S)
     {
-      // Both seams meet (span = 2·capSpan): one point touching both profile faces.
-      const bool seam = capType == MedialPoint3DType::Seam;
-      const int id = addPoint(W.place(p, 0.5 * S), r, seam ? MedialPoint3DType::Junction : capType,
-        capContacts > 0 ? capContacts + 1 : 0);
+      // Both seams meet (span = 2·capSpan): one point touching both profile faces, a
+      // degenerate seam or junction point (§5.5.1).
+      const int id = addPoint(W.place(p, 0.5 * S), r, capType, capContacts > 0 ? capContacts + 1 : 0);
       return std::vector<int>(Across + 1, id);
     }
     for (int j = 0; j <= Across; ++j)
@@ -161,7 +160,11 @@ private:
   void buildNode(int n)
   {
     const MedialNode& node = M.nodes[n];
-    const int feet = anyContinuum(node.footpoints) ? 0 : static_cast<int>(node.footpoints.size());
+    // A disk touching a whole arc (its centre) has no finite number of touchpoints.
+    const bool continuum = anyContinuum(node.footpoints) ||
+      (node.sample.radius > 0.0 &&
+        anyContinuum(G.footpointsWithin(node.sample.x, node.sample.radius * (1.0 + 1e-9))));
+    const int feet = continuum ? 0 : static_cast<int>(node.footpoints.size());
     const Vec2& x = node.sample.x;
     const double r = node.sample.radius;
     using T = MedialPoint3DType;
@@ -228,17 +231,28 @@ private:
   void buildSegment(int k)
   {
     const MedialSegment& seg = M.segments[k];
-    const size_t n = seg.samples.size();
+    // Samples that repeat their predecessor or the end node (a tracer's first step can
+    // land on its node) would be a second, mislabelled copy of that point.
+    std::vector<MedialSample> samples{ seg.samples.front() };
+    const double same = 1e-12 * Size;
+    for (size_t i = 1; i + 1 < seg.samples.size(); ++i)
+    {
+      const Vec2& x = seg.samples[i].x;
+      if ((x - samples.back().x).norm() > same && (x - seg.samples.back().x).norm() > same)
+        samples.push_back(seg.samples[i]);
+    }
+    samples.push_back(seg.samples.back());
+    const size_t n = samples.size();
     std::vector<std::vector<int>> columns(n);
     columns.front() = NodeColumn[seg.startNode];
     columns.back() = NodeColumn[seg.endNode];
     for (size_t i = 1; i + 1 < n; ++i)
     {
-      const MedialSample& s = seg.samples[i];
+      const MedialSample& s = samples[i];
       columns[i] = column(s.x, s.radius, MedialPoint3DType::Seam, 3, MedialPoint3DType::Sheet, 2);
     }
     std::vector<BoundaryLocation> sideA, sideB;
-    for (const MedialSample& s : seg.samples)
+    for (const MedialSample& s : samples)
     {
       sideA.push_back(s.foot[0]);
       sideB.push_back(s.foot[1]);
@@ -282,7 +296,7 @@ private:
         std::vector<StripColumn> strip;
         for (size_t i = 0; i < n; ++i)
         {
-          const MedialSample& s = seg.samples[i];
+          const MedialSample& s = samples[i];
           strip.push_back({ s.foot[side].point, s.x, s.radius, seam[i] });
         }
         std::vector<int> sg = side == 0 ? govA : govB;

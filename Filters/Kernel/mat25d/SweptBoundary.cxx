@@ -80,30 +80,58 @@ double SweptBoundary::distance(const Vec3& x) const
   return d;
 }
 
-Vec3List SweptBoundary::touchpoints(const Vec3& x, double radius) const
+bool SweptBoundary::sameContact(
+  const Vec3& x, double radius, const Vec3& a, const Vec3& b, double merge) const
+{
+  const double gap = (a - b).norm();
+  if (gap <= merge)
+    return true;
+  if (gap > 0.2 * radius)
+    return false;
+  // Two minima close together are one contact when the boundary between them stays
+  // inside the ball (a flat valley: the ball osculates there), two when it bulges out.
+  const Vec3 mid = 0.5 * (a + b);
+  Vec3 nearest = mid;
+  double d = Unbounded;
+  SideTree.nearest(mid,
+    [&](int i) {
+      const PatchFootpoint f = closestPoint(Sides[i].patch, mid);
+      if (f.distance < d)
+      {
+        d = f.distance;
+        nearest = f.point;
+      }
+      return f.distance;
+    },
+    nullptr);
+  return (nearest - x).norm() <= radius;
+}
+
+std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, double radius) const
 {
   struct Minimum
   {
     Vec3 point;
     double distance;
     bool oneSided;
+    int source;
   };
   std::vector<Minimum> minima;
   for (int i : SideTree.candidatesWithin(x, radius))
   {
     for (const PatchFootpoint& f : patchFootpoints(Sides[i].patch, x, radius))
-      minima.push_back({ f.point, f.distance, f.onBoundary });
+      minima.push_back({ f.point, f.distance, f.onBoundary, i });
   }
   for (int face = 0; face < 2; ++face)
   {
     Vec3 foot;
     const double d = faceDistance(face, x, &foot);
     if (d <= radius)
-      minima.push_back({ foot, d, false });
+      minima.push_back({ foot, d, false, face == 0 ? ProfileFace0 : ProfileFace1 });
   }
   std::sort(minima.begin(), minima.end(),
     [](const Minimum& a, const Minimum& b) { return a.distance < b.distance; });
-  Vec3List out;
+  std::vector<Contact> out;
   const double merge = 1e-7 * Size;
   for (const Minimum& m : minima)
   {
@@ -118,10 +146,10 @@ Vec3List SweptBoundary::touchpoints(const Vec3& x, double radius) const
         keep = false;
       }
     }
-    for (const Vec3& q : out)
-      keep = keep && (q - m.point).norm() > merge;
+    for (const Contact& q : out)
+      keep = keep && !sameContact(x, radius, q.point, m.point, merge);
     if (keep)
-      out.push_back(m.point);
+      out.push_back({ m.point, m.distance, m.source });
   }
   return out;
 }

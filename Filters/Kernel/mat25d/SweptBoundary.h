@@ -21,10 +21,19 @@ public:
   /// Global distance from x to the solid's boundary.
   double distance(const Vec3& x) const;
 
+  /// A local minimum of the distance from a point to the boundary.
+  struct Contact
+  {
+    Vec3 point = Vec3::Zero();
+    double distance = 0.0;
+    int source = -1; ///< side patch index, or ProfileFace0 / ProfileFace1
+  };
+  static constexpr int ProfileFace0 = -1, ProfileFace1 = -2;
+
   /// The distinct touchpoints of the ball of radius `radius` about x: local minima of the
-  /// distance within `radius`, on the sides and on the profile faces. A one-sided minimum
-  /// on a patch border that the next patch undercuts is not one.
-  Vec3List touchpoints(const Vec3& x, double radius) const;
+  /// distance within `radius`, on the sides and on the profile faces, nearest first. A
+  /// one-sided minimum on a patch border that the next patch undercuts is not one.
+  std::vector<Contact> touchpoints(const Vec3& x, double radius) const;
 
   /// True when profile point p (profile frame) is inside the profile or on its boundary.
   bool insideProfile(const Vec2& p) const;
@@ -33,9 +42,13 @@ public:
   /// Bounding-box diagonal of the solid.
   double size() const { return Size; }
 
-private:
-  /// Distance from x to profile face f, or +∞ where the face cannot be nearest.
+  /// Distance from x to profile face `face` (0 start, 1 end) and the foot of the
+  /// perpendicular, or +∞ where the face cannot be nearest (foot outside the profile,
+  /// 360° revolutions).
   double faceDistance(int face, const Vec3& x, Vec3* foot) const;
+
+private:
+  bool sameContact(const Vec3& x, double radius, const Vec3& a, const Vec3& b, double merge) const;
 
   const Boundary2D* Profile;
   const SweepMap* Map;
