@@ -20,6 +20,16 @@
  * −1 for node vertex cells), `Generator0`, `Generator1` (int: the EdgeId of the boundary
  * entity, −1 for a reflex corner), `Generators` (string: every generator of the cell,
  * e.g. "3,7,12" for a branch node; reflex corners as "v<vertex>").
+ *
+ * Solids (vtkMAT25DFilter), point data: `Radius`; `PointType` (int, see
+ * exactmat::MedialPoint3DType: 0 sheet, 1 seam, 2 junction, 3 seam end, 4 skeletal edge,
+ * 5 on a convex edge or vertex of the solid, 6 centre of a ball touching a circle);
+ * `Touchpoints` (int: distinct touching points of the ball by construction, 0 = not
+ * finite). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
+ * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet), `ElementId`
+ * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
+ * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.
+ * "start,2,5"; "start"/"end" = the profile faces, "v<vertex>" = a reflex edge).
  */
 
 namespace exactmat
@@ -39,6 +49,10 @@ constexpr const char* SegmentId = "SegmentId";
 constexpr const char* Generator0 = "Generator0";
 constexpr const char* Generator1 = "Generator1";
 constexpr const char* Generators = "Generators";
+constexpr const char* Touchpoints = "Touchpoints";
+constexpr const char* ElementType = "ElementType";
+constexpr const char* ElementId = "ElementId";
+constexpr const char* Governors = "Governors";
 } // namespace arrays
 } // namespace exactmat
 

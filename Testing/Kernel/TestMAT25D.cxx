@@ -278,8 +278,12 @@ TEST(MAT25D, RevolvedRectangleIsAHollowCylinderSegment)
   }
   // Every junction ball touches the start or end face at distance 1.
   for (const MedialElement& e : r->mat.elements)
+  {
     if (e.type == MedialElementType::Junction)
+    {
       EXPECT_NEAR(r->mat.points[e.points[0]].radius, 1.0, 1e-12);
+    }
+  }
   expectVerified(*r, "revolved rectangle");
 }
 
@@ -348,8 +352,12 @@ TEST(MAT25D, DegenerateJunctionsAtSpanTwiceRmax)
   EXPECT_TRUE(contains(j, Vec3(-1, 0, 1), 1e-12));
   EXPECT_TRUE(contains(j, Vec3(1, 0, 1), 1e-12));
   for (const MedialElement& e : r->mat.elements)
+  {
     if (e.type == MedialElementType::Junction)
+    {
       EXPECT_EQ(r->mat.points[e.points[0]].contacts, 5);
+    }
+  }
   expectVerified(*r, "box of length 2·Rmax");
 }
 
@@ -440,3 +448,35 @@ INSTANTIATE_TEST_SUITE_P(MAT25D, EveryProfile,
     std::replace(n.begin(), n.end(), '-', '_');
     return n;
   });
+
+#include "mat25d/SweptSolid.h"
+
+// The swept solid's faces: exact sides, profile faces tiled by the medial strips. Closed,
+// conforming (Boundary3D accepts it: every edge shared by two faces), volume = area × L
+// (extrusion) or, by Pappus, angle × area × centroid distance (revolution).
+TEST(MAT25D, SweptSolidIsClosedWithTheRightVolume)
+{
+  for (const char* name : { "rectangle", "l-shape", "ellipse", "annulus", "plate-with-holes",
+         "blob", "rounded-rectangle", "star" })
+  {
+    const Boundary2D profile = Boundary2D::build(curvePieces(makeShape(name).curves));
+    double area = 0.0;
+    for (const Loop2D& l : profile.loops())
+      area += l.signedArea;
+    const Generators g(profile);
+    const MedialGraph graph = computeMAT2D(g);
+    const SweepMap extruded(profile, extrusion(2.5 * 2.0));
+    const Boundary3D solid = Boundary3D::build(sweptSolidFaces(g, graph, extruded));
+    EXPECT_NEAR(solid.volume(), area * 5.0, 1e-9 * area * 5.0) << name;
+  }
+  // The 4×2 rectangle 1..5 from the axis (centroid at 3): 90° and 360°.
+  const Boundary2D rect = Boundary2D::build(curvePieces(makeShape("rectangle").curves));
+  const Generators g(rect);
+  const MedialGraph graph = computeMAT2D(g);
+  for (const double degrees : { 90.0, 360.0 })
+  {
+    const SweepMap turned(rect, revolution(degrees, Vec3(-3, 0, 0)));
+    const Boundary3D solid = Boundary3D::build(sweptSolidFaces(g, graph, turned));
+    EXPECT_NEAR(solid.volume(), degrees * Pi / 180.0 * 8.0 * 3.0, 1e-9 * 100.0) << degrees;
+  }
+}

@@ -150,14 +150,34 @@ double SweepMap::capSpan(const Vec2& p, double r) const
   return std::asin(std::min(1.0, r / axisDistance(p)));
 }
 
-std::vector<PatchPiece> SweepMap::sideFaces() const
+Vec4 SweepMap::placeHomogeneous(const Vec4& h, double tau) const
+{
+  const Vec3 x = place(Vec2(h.x() / h.w(), h.y() / h.w()), tau);
+  return Vec4(h.w() * x.x(), h.w() * x.y(), h.w() * x.z(), h.w());
+}
+
+std::vector<PatchPiece> SweepMap::sideFaces(const std::vector<std::vector<double>>& splits) const
 {
   std::vector<PatchPiece> faces;
+  const std::vector<Edge2D>& edges = Profile->edges();
+  for (size_t k = 0; k < edges.size(); ++k)
+  {
+    std::vector<double> cuts{ 0.0 };
+    if (k < splits.size())
+      cuts.insert(cuts.end(), splits[k].begin(), splits[k].end());
+    cuts.push_back(1.0);
+    for (size_t c = 0; c + 1 < cuts.size(); ++c)
+      appendSides(edges[k], edges[k].curve.segment(cuts[c], cuts[c + 1]).inStandardForm(), faces);
+  }
+  return faces;
+}
+
+void SweepMap::appendSides(const Edge2D& e, const BezierCurve& piece, std::vector<PatchPiece>& faces) const
+{
   const Plane& pl = plane();
-  for (const Edge2D& e : Profile->edges())
   {
     Vec4List world;
-    for (const Vec4& h : e.curve.homogeneousPoints())
+    for (const Vec4& h : piece.homogeneousPoints())
       world.push_back(pl.toWorldHomogeneous(h));
     const int p = static_cast<int>(world.size()) - 1;
     if (S.kind == SweepKind::Extrusion)
@@ -169,8 +189,8 @@ std::vector<PatchPiece> SweepMap::sideFaces() const
         const Vec3 moved = h.head<3>() + h.w() * S.length * pl.normal;
         net.push_back(Vec4(moved.x(), moved.y(), moved.z(), h.w()));
       }
-      faces.push_back({ BezierPatch(p, 1, net), std::nullopt, e.piece });
-      continue;
+      faces.push_back({ BezierPatch(p, 1, net), std::nullopt, e.entity });
+      return;
     }
     const int spans = std::max(1, static_cast<int>(std::ceil(Span / (0.5 * Pi) - 1e-9)));
     for (int k = 0; k < spans; ++k)
@@ -183,10 +203,9 @@ std::vector<PatchPiece> SweepMap::sideFaces() const
         arcNet(h, Aw, Dw, Mw, Nw, t0, t1, arc);
         net.insert(net.end(), arc, arc + 3);
       }
-      faces.push_back({ BezierPatch(p, 2, net), std::nullopt, e.piece });
+      faces.push_back({ BezierPatch(p, 2, net), std::nullopt, e.entity });
     }
   }
-  return faces;
 }
 
 bool SweepMap::projectOnProfileFace(int face, const Vec3& x, Vec2& foot, double& distance) const

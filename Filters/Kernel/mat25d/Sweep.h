@@ -64,8 +64,13 @@ public:
 
   /// The side faces of the solid, exact: per profile edge one rational Bézier patch of
   /// degrees (p, 1) for an extrusion, or (p, 2) per ≤ 90° of revolution. entity = the
-  /// profile edge's input piece (the FaceId of that side).
-  std::vector<PatchPiece> sideFaces() const;
+  /// profile edge's entity (its EdgeId: the side's FaceId).
+  /// With `splits` (per profile edge, sorted parameters in (0,1)) each side is cut there
+  /// too, so it conforms with profile faces tiled at those parameters.
+  std::vector<PatchPiece> sideFaces(const std::vector<std::vector<double>>& splits = {}) const;
+
+  /// T_τ applied to a homogeneous control point of the profile frame (exact: rigid).
+  Vec4 placeHomogeneous(const Vec4& h, double tau) const;
 
   /// The orthogonal projection of world point x on profile face `face` (0 start, 1 end),
   /// in the profile frame, and its distance to that face's plane. False when the
@@ -78,6 +83,7 @@ public:
 
 private:
   void checkAxis() const;
+  void appendSides(const Edge2D& e, const BezierCurve& piece, std::vector<PatchPiece>& faces) const;
 
   const Boundary2D* Profile;
   Sweep S;

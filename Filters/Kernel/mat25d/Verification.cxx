@@ -7,14 +7,19 @@ namespace exactmat
 {
 
 MAT25DVerification verifyMAT25D(
-  const SweptBoundary& boundary, const MedialComplex& mat, int stride)
+  const SweptBoundary& boundary, const MedialComplex& mat, int sheetStride)
 {
   MAT25DVerification v;
   const double size = boundary.size();
   const int n = static_cast<int>(mat.points.size());
-  for (int i = 0; i < n; i += std::max(1, stride))
+  int sheetPoints = 0;
+  for (int i = 0; i < n; ++i)
   {
     const MedialPoint3D& p = mat.points[i];
+    const bool sheet =
+      p.type == MedialPoint3DType::Sheet || p.type == MedialPoint3DType::ConvexEdge;
+    if (sheet && sheetPoints++ % std::max(1, sheetStride) != 0)
+      continue;
     ++v.points;
     const double error = std::abs(boundary.distance(p.x) - p.radius) / size;
     if (!(error <= v.maxDistanceError))

@@ -26,9 +26,10 @@ struct MAT25DVerification
   }
 };
 
-/// Checks every `stride`-th point (1 = all). Touchpoints count within
-/// r·(1 + 1e-9) + 1e-9·size.
+/// Checks every point of the curves (junctions, seams, seam ends, skeletal edges, centre
+/// curves) and every `sheetStride`-th sheet point (1 = all; radius-0 points on the
+/// solid's edges count as sheet points). Touchpoints count within r·(1 + 1e-9) + 1e-9·size.
 MAT25DVerification verifyMAT25D(
-  const SweptBoundary& boundary, const MedialComplex& mat, int stride = 1);
+  const SweptBoundary& boundary, const MedialComplex& mat, int sheetStride = 1);
 
 } // namespace exactmat

@@ -1,5 +1,7 @@
 #include "BezierCurve.h"
 
+#include <cmath>
+
 #include "nurbs/Bernstein.h"
 
 namespace exactmat
@@ -71,6 +73,25 @@ void BezierCurve::split(double t, BezierCurve& left, BezierCurve& right) const
   }
   left = BezierCurve(std::move(l));
   right = BezierCurve(std::move(r));
+}
+
+BezierCurve BezierCurve::inStandardForm() const
+{
+  const int p = degree();
+  if (p < 1)
+    return *this;
+  const double w0 = Points.front().w(), wp = Points.back().w();
+  const double c = std::pow(w0 / wp, 1.0 / p);
+  Vec4List out(Points.size());
+  double scale = 1.0 / w0;
+  for (int k = 0; k <= p; ++k)
+  {
+    out[k] = Points[k] * scale;
+    scale *= c;
+  }
+  out.back().w() = 1.0; // exactly, not to rounding
+  out.back().head<3>() = euclidean(Points.back());
+  return BezierCurve(out);
 }
 
 BezierCurve BezierCurve::segment(double t0, double t1) const

@@ -44,6 +44,11 @@ public:
   BezierCurve segment(double t0, double t1) const;
   /// The same curve traversed backwards.
   BezierCurve reversed() const;
+  /// The same curve with end weights 1 (a rational re-parameterisation w_k → w_k·c^k / w_0):
+  /// two pieces cut from one curve at the same parameters then agree point for point, and
+  /// a patch ruled between it and a polynomial curve has straight, linearly parameterised
+  /// end rulings.
+  BezierCurve inStandardForm() const;
   /// Bounding box of the Euclidean control points (contains the curve).
   Box3 boundingBox() const;
   /// The curve as a one-span NurbsCurve on [0,1].

@@ -1,0 +1,241 @@
+#include "vtkMAT25DFilter.h"
+
+#include "vtkExactMATArrayNames.h"
+#include "vtkMATBoundaryConversion.h"
+
+#include "common/InputError.h"
+#include "mat25d/MAT25D.h"
+#include "mat25d/Verification.h"
+#include "mat2d/Tracer.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <chrono>
+#include <string>
+
+vtkStandardNewMacro(vtkMAT25DFilter);
+
+vtkMAT25DFilter::vtkMAT25DFilter() = default;
+vtkMAT25DFilter::~vtkMAT25DFilter() = default;
+
+int vtkMAT25DFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+namespace
+{
+using namespace exactmat;
+
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// "3,7,start" from governor ids (MAT25D.h numbering): profile edges by their EdgeId.
+std::string governorNames(const Boundary2D& profile, const std::vector<int>& governors)
+{
+  const int edges = static_cast<int>(profile.edges().size());
+  std::string out;
+  for (int g : governors)
+  {
+    std::string name;
+    if (g < edges)
+      name = std::to_string(profile.edges()[g].entity);
+    else if (g == edges)
+      name = "start";
+    else if (g == edges + 1)
+      name = "end";
+    else
+      name = "v" + std::to_string(g - edges - 2);
+    out += (out.empty() ? "" : ",") + name;
+  }
+  return out;
+}
+
+void writeComplex(const MedialComplex& mat, const Boundary2D& profile, vtkPolyData* out)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mat.points.size()));
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(arrays::Radius);
+  radius->SetNumberOfTuples(points->GetNumberOfPoints());
+  vtkNew<vtkIntArray> type, touchpoints;
+  type->SetName(arrays::PointType);
+  type->SetNumberOfTuples(points->GetNumberOfPoints());
+  touchpoints->SetName(arrays::Touchpoints);
+  touchpoints->SetNumberOfTuples(points->GetNumberOfPoints());
+  for (size_t i = 0; i < mat.points.size(); ++i)
+  {
+    const MedialPoint3D& p = mat.points[i];
+    points->SetPoint(static_cast<vtkIdType>(i), p.x.data());
+    radius->SetValue(static_cast<vtkIdType>(i), p.radius);
+    type->SetValue(static_cast<vtkIdType>(i), static_cast<int>(p.type));
+    touchpoints->SetValue(static_cast<vtkIdType>(i), p.contacts);
+  }
+
+  // vtkPolyData orders cells verts, lines, polys: cell data is filled in that order.
+  vtkNew<vtkCellArray> verts, lines, polys;
+  vtkNew<vtkIntArray> elementType, elementId, segment;
+  vtkNew<vtkStringArray> governors;
+  elementType->SetName(arrays::ElementType);
+  elementId->SetName(arrays::ElementId);
+  segment->SetName(arrays::SegmentId);
+  governors->SetName(arrays::Governors);
+  auto addCellData = [&](size_t e) {
+    const MedialElement& el = mat.elements[e];
+    elementType->InsertNextValue(static_cast<int>(el.type));
+    elementId->InsertNextValue(static_cast<int>(e));
+    segment->InsertNextValue(el.profileSegment);
+    governors->InsertNextValue(governorNames(profile, el.governors));
+  };
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    for (size_t e = 0; e < mat.elements.size(); ++e)
+    {
+      const MedialElement& el = mat.elements[e];
+      std::vector<vtkIdType> ids(el.points.begin(), el.points.end());
+      if (pass == 0 && el.type == MedialElementType::Junction)
+      {
+        verts->InsertNextCell(1, ids.data());
+        addCellData(e);
+      }
+      else if (pass == 1 && !el.points.empty() && el.type != MedialElementType::Junction)
+      {
+        lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+        addCellData(e);
+      }
+      else if (pass == 2)
+      {
+        for (const auto& t : el.triangles)
+        {
+          const vtkIdType tri[3] = { t[0], t[1], t[2] };
+          polys->InsertNextCell(3, tri);
+          addCellData(e);
+        }
+      }
+    }
+  }
+  out->SetPoints(points);
+  out->SetVerts(verts);
+  out->SetLines(lines);
+  out->SetPolys(polys);
+  out->GetPointData()->AddArray(radius);
+  out->GetPointData()->SetScalars(radius);
+  out->GetPointData()->AddArray(type);
+  out->GetPointData()->AddArray(touchpoints);
+  out->GetCellData()->AddArray(elementType);
+  out->GetCellData()->AddArray(elementId);
+  out->GetCellData()->AddArray(segment);
+  out->GetCellData()->AddArray(governors);
+}
+} // namespace
+
+int vtkMAT25DFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSkeletalEdges = 0;
+  this->NumberOfSheets = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
+  this->MaximumVerifiedError = this->ProfileSeconds = this->ConstructionSeconds = 0.0;
+  try
+  {
+    if (exactmat::gridHasSurfaceCells(input))
+    {
+      exactmat::fail("the input holds surface cells: vtkMAT25DFilter takes the profile "
+                     "curves of the solid (use vtkMAT3DFilter for solids given by surfaces)");
+    }
+    const exactmat::Boundary2D profile =
+      exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(input));
+    exactmat::Sweep sweep;
+    sweep.kind = this->SweepType == Revolution ? exactmat::SweepKind::Revolution
+                                                : exactmat::SweepKind::Extrusion;
+    sweep.length = this->Length;
+    sweep.angle = this->Angle * 3.14159265358979323846 / 180.0;
+    sweep.axisPoint = exactmat::Vec3(this->AxisOrigin[0], this->AxisOrigin[1], this->AxisOrigin[2]);
+    sweep.axisDirection =
+      exactmat::Vec3(this->AxisDirection[0], this->AxisDirection[1], this->AxisDirection[2]);
+    const exactmat::SweepMap map(profile, sweep); // checks the sweep before any work
+
+    auto t0 = std::chrono::steady_clock::now();
+    const exactmat::Generators generators(profile);
+    exactmat::MAT2DOptions options;
+    options.tolerance = this->Tolerance;
+    options.fixedStep = this->FixedStep;
+    options.step = this->Step;
+    options.branchCheckStep = this->BranchCheckStep;
+    options.progress = [this](double f) { this->UpdateProgress(0.5 * f); };
+    const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
+    this->ProfileSeconds = secondsSince(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    exactmat::MAT25DOptions options3;
+    options3.sheetResolution = this->SheetResolution;
+    options3.progress = [this](double f) { this->UpdateProgress(0.5 + 0.3 * f); };
+    const exactmat::MedialComplex mat = exactmat::computeMAT25D(generators, graph, map, options3);
+    this->ConstructionSeconds = secondsSince(t0);
+    writeComplex(mat, profile, output);
+
+    using ET = exactmat::MedialElementType;
+    this->NumberOfJunctions = mat.count(ET::Junction);
+    this->NumberOfSeams = mat.count(ET::Seam);
+    this->NumberOfSkeletalEdges = mat.count(ET::SkeletalEdge);
+    this->NumberOfSheets = mat.count(ET::SweptSheet) + mat.count(ET::ProfileSheet);
+    if (this->VerifyOutput)
+    {
+      const int sheetPoints = mat.countPoints(exactmat::MedialPoint3DType::Sheet) +
+        mat.countPoints(exactmat::MedialPoint3DType::ConvexEdge);
+      const int stride = this->MaximumSheetPointsVerified > 0
+        ? std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) /
+              this->MaximumSheetPointsVerified)
+        : VTK_INT_MAX;
+      const exactmat::SweptBoundary boundary(profile, map);
+      const exactmat::MAT25DVerification v = exactmat::verifyMAT25D(boundary, mat, stride);
+      this->NumberOfVerifiedPoints = v.points;
+      this->MaximumVerifiedError = v.maxDistanceError;
+      this->NumberOfTouchpointMismatches = v.contactMismatches;
+    }
+    this->UpdateProgress(1.0);
+  }
+  catch (const exactmat::InputError& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void vtkMAT25DFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SweepType: " << (this->SweepType == Revolution ? "Revolution" : "Extrusion")
+     << "\n";
+  os << indent << "Length: " << this->Length << "\n";
+  os << indent << "Angle: " << this->Angle << "\n";
+  os << indent << "AxisOrigin: " << this->AxisOrigin[0] << " " << this->AxisOrigin[1] << " "
+     << this->AxisOrigin[2] << "\n";
+  os << indent << "AxisDirection: " << this->AxisDirection[0] << " " << this->AxisDirection[1]
+     << " " << this->AxisDirection[2] << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "FixedStep: " << this->FixedStep << "\n";
+  os << indent << "Step: " << this->Step << "\n";
+  os << indent << "BranchCheckStep: " << this->BranchCheckStep << "\n";
+  os << indent << "SheetResolution: " << this->SheetResolution << "\n";
+  os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
+  os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
+  os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
+}
