@@ -104,7 +104,7 @@ public:
 
   ///@{
   /// Verification against the exact swept boundary (default on), and how many sheet points
-  /// at most it checks (default 2000; the curves' points are always all checked).
+  /// at most it checks (default 500; the curves' points are always all checked).
   vtkSetMacro(VerifyOutput, bool);
   vtkGetMacro(VerifyOutput, bool);
   vtkBooleanMacro(VerifyOutput, bool);
@@ -146,7 +146,7 @@ protected:
   double BranchCheckStep = 1e-2;
   double SheetResolution = 0.02;
   bool VerifyOutput = true;
-  int MaximumSheetPointsVerified = 2000;
+  int MaximumSheetPointsVerified = 500;
 
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;

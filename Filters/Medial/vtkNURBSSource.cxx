@@ -3,6 +3,8 @@
 #include "vtkMATBoundaryConversion.h"
 
 #include "common/InputError.h"
+#include "mat25d/SweptSolid.h"
+#include "mat2d/Tracer.h"
 #include "shapes/Catalogue.h"
 
 #include <vtkDoubleArray.h>
@@ -10,8 +12,32 @@
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <functional>
 
 vtkStandardNewMacro(vtkNURBSSource);
+
+namespace
+{
+// The solid swept by a 2D shape, as exact conforming Bézier faces (see SweptSolid.h): the
+// profile faces are tiled along the profile's MAT.
+vtkSmartPointer<vtkUnstructuredGrid> sweptSolid(const exactmat::Shape& shape,
+  const exactmat::Sweep& sweep, const std::function<void(double)>& progress)
+{
+  const exactmat::Boundary2D profile =
+    exactmat::Boundary2D::build(exactmat::curvePieces(shape.curves));
+  const exactmat::SweepMap map(profile, sweep);
+  const exactmat::Generators generators(profile);
+  exactmat::MAT2DOptions options;
+  options.progress = progress;
+  const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
+  exactmat::BoundaryGridBuilder builder;
+  for (const exactmat::PatchPiece& face : exactmat::sweptSolidFaces(generators, graph, map))
+    builder.addPatch(face.patch, face.entity);
+  return builder.grid();
+}
+} // namespace
 
 struct vtkNURBSSource::Internals
 {
@@ -158,6 +184,26 @@ int vtkNURBSSource::RequestData(
       shape = exactmat::makeShape(this->GetShapeName(), p);
     }
     this->UpdateProgress(0.2);
+    if (this->Sweep != SweepNone)
+    {
+      if (shape.dimension != 2)
+      {
+        exactmat::fail("sweep: '", shape.name, "' is a solid; only 2D shapes (profiles) are "
+          "extruded or revolved");
+      }
+      exactmat::Sweep sweep;
+      sweep.kind = this->Sweep == SweepRevolution ? exactmat::SweepKind::Revolution
+                                             : exactmat::SweepKind::Extrusion;
+      sweep.length = this->Length;
+      sweep.angle = this->SweepAngle * 3.14159265358979323846 / 180.0;
+      sweep.axisPoint = exactmat::Vec3(
+        this->SweepAxisOrigin[0], this->SweepAxisOrigin[1], this->SweepAxisOrigin[2]);
+      sweep.axisDirection = exactmat::Vec3(
+        this->SweepAxisDirection[0], this->SweepAxisDirection[1], this->SweepAxisDirection[2]);
+      output->ShallowCopy(
+        sweptSolid(shape, sweep, [this](double f) { this->UpdateProgress(0.2 + 0.7 * f); }));
+      return 1;
+    }
     exactmat::BoundaryGridBuilder builder;
     builder.addShape(shape);
     this->UpdateProgress(0.6);
@@ -193,6 +239,7 @@ void vtkNURBSSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CornerRadius: " << this->CornerRadius << "\n";
   os << indent << "Thickness: " << this->Thickness << "\n";
   os << indent << "Count: " << this->Count << "\n";
+  os << indent << "Sweep: " << this->Sweep << ", SweepAngle: " << this->SweepAngle << "\n";
   os << indent << "User curves: " << this->Internal->Curves.size()
      << ", user surfaces: " << this->Internal->Surfaces.size() << "\n";
 }

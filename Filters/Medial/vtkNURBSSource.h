@@ -100,6 +100,32 @@ public:
   vtkGetMacro(Count, int);
   ///@}
 
+  enum Sweeps
+  {
+    SweepNone = 0,       ///< the shape itself
+    SweepExtrusion = 1,  ///< a 2D shape extruded by Length along its plane's normal
+    SweepRevolution = 2  ///< a 2D shape revolved by SweepAngle about the sweep axis
+  };
+
+  ///@{
+  /**
+   * Sweep a 2D shape (catalogue or user curves) into the solid vtkMAT25DFilter computes
+   * the MAT of: the side faces exactly (profile piece × line, or × rational quadratic arcs
+   * of ≤ 90°) and the two profile faces tiled exactly by planar ruled patches along the
+   * profile's medial strips, conforming along every shared edge. FaceId: a side carries
+   * its profile curve's EdgeId; the start and end profile faces the next two ids.
+   * Defaults: SweepNone, SweepAngle 360 (degrees), axis through the origin along y.
+   */
+  vtkSetClampMacro(Sweep, int, SweepNone, SweepRevolution);
+  vtkGetMacro(Sweep, int);
+  vtkSetMacro(SweepAngle, double);
+  vtkGetMacro(SweepAngle, double);
+  vtkSetVector3Macro(SweepAxisOrigin, double);
+  vtkGetVector3Macro(SweepAxisOrigin, double);
+  vtkSetVector3Macro(SweepAxisDirection, double);
+  vtkGetVector3Macro(SweepAxisDirection, double);
+  ///@}
+
   /**
    * Adds a NURBS curve (Shape = UserDefined): degree, knot vector (control points + degree
    * + 1 values), control points, and weights (nullptr = all 1). Checked when the output is
@@ -132,6 +158,10 @@ protected:
   double CornerRadius = 0.4;
   double Thickness = 1.0;
   int Count = 5;
+  int Sweep = SweepNone;
+  double SweepAngle = 360.0;
+  double SweepAxisOrigin[3] = { 0.0, 0.0, 0.0 };
+  double SweepAxisDirection[3] = { 0.0, 1.0, 0.0 };
 
 private:
   vtkNURBSSource(const vtkNURBSSource&) = delete;
