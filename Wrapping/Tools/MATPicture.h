@@ -12,3 +12,9 @@ class vtkUnstructuredGrid;
 /// Returns false (with a message in `error`) when rendering is not possible.
 bool writeMATPicture(vtkUnstructuredGrid* boundary, vtkPolyData* mat, const std::string& png,
   const std::string& title, std::string& error);
+
+/// Draws a solid (its exact faces sampled, translucent), the medial sheets coloured by
+/// `Radius`, and the seams, skeletal edges and junctions in dark lines and points, seen
+/// obliquely.
+bool writeSolidMATPicture(vtkUnstructuredGrid* solid, vtkPolyData* mat, const std::string& png,
+  const std::string& title, std::string& error);

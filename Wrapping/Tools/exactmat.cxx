@@ -2,6 +2,8 @@
 //
 //   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
 //               [--png OUT.png] [--shape NAME]
+//   exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [...]
+//   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp] [...]
 //   exactmat shapes
 //
 // INPUT is a .vtu of (rational) Bézier cells or ExactMAT's .json NURBS format; without
@@ -9,6 +11,7 @@
 #include "MATPicture.h"
 
 #include "vtkExactMATArrayNames.h"
+#include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
 #include "vtkMATBoundaryConversion.h"
 #include "vtkNURBSReader.h"
@@ -23,6 +26,8 @@
 #include <vtkCommand.h>
 #include <vtkIdList.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkPoints.h>
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
@@ -46,6 +51,10 @@ namespace
 const char* Usage = R"(usage:
   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
               [--png OUT.png] [--shape NAME]
+  exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [--shape NAME]
+                   [--sheet-resolution R] [--tolerance T | --step S]
+  exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
+                   [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
   exactmat shapes          list the bundled shapes
 
   INPUT          boundary curves: a .vtu of Bezier cells, or ExactMAT .json NURBS;
@@ -55,12 +64,23 @@ const char* Usage = R"(usage:
   --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
                  default 10 S)
   --png OUT.png  a picture of the boundary and the MAT coloured by radius
+
+  extrude, revolve: the MAT of the solid swept by the profile PROFILE (2D input as above)
+  --length L     extrusion length along the profile plane's normal (needed; at least
+                 2 x the profile's largest inscribed radius)
+  --angle DEG    revolution angle, (0, 360] (default 360)
+  --axis P[,D]   revolution axis through point P along D (default D = 0,1,0); default axis:
+                 parallel to y, half the profile's width left of it
+  --sheet-resolution R  sheet vertex spacing, fraction of the solid's size (default 0.02)
+  OUT.vtp defaults to exactmat-extrude.vtp / exactmat-revolve.vtp
 )";
 
 struct Arguments
 {
-  std::string command, input, output = "exactmat-2d.vtp", png, shape = "plate-with-holes";
+  std::string command, input, output, png, shape = "plate-with-holes";
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0;
+  double length = 0.0, angle = 360.0, sheetResolution = 0.02;
+  std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
 
 [[noreturn]] void usageError(const std::string& message)
@@ -75,6 +95,26 @@ double number(const std::string& flag, const char* text)
   const double v = std::strtod(text, &end);
   if (!text[0] || *end || !(v > 0.0) || !std::isfinite(v))
     usageError(flag + " needs a positive number, got '" + text + "'");
+  return v;
+}
+
+std::vector<double> numberList(const std::string& flag, const std::string& text)
+{
+  std::vector<double> v;
+  size_t start = 0;
+  while (start <= text.size())
+  {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string part = text.substr(start, comma - start);
+    char* end = nullptr;
+    const double x = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end || !std::isfinite(x))
+      usageError(flag + " needs comma-separated numbers, got '" + text + "'");
+    v.push_back(x);
+    start = comma + 1;
+  }
+  if (v.size() != 3 && v.size() != 6)
+    usageError(flag + " needs 3 numbers (a point) or 6 (point and direction), got '" + text + "'");
   return v;
 }
 
@@ -104,6 +144,14 @@ Arguments parse(int argc, char* argv[])
       a.branchStep = number(arg, value());
     else if (arg == "--shape")
       a.shape = value();
+    else if (arg == "--length")
+      a.length = number(arg, value());
+    else if (arg == "--angle")
+      a.angle = number(arg, value());
+    else if (arg == "--axis")
+      a.axis = numberList(arg, value());
+    else if (arg == "--sheet-resolution")
+      a.sheetResolution = number(arg, value());
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << Usage;
@@ -116,6 +164,8 @@ Arguments parse(int argc, char* argv[])
     else
       usageError("more than one INPUT");
   }
+  if (a.output.empty())
+    a.output = "exactmat-" + a.command + ".vtp";
   return a;
 }
 
@@ -141,6 +191,28 @@ public:
     Failed = true;
   }
   bool Failed = false;
+};
+
+// Progress on long runs: a line on stderr every 10% once a second has passed.
+class ProgressLine : public vtkCommand
+{
+public:
+  static ProgressLine* New() { return new ProgressLine; }
+  void Execute(vtkObject*, unsigned long, void* call) override
+  {
+    const double f = *static_cast<double*>(call);
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - Start).count();
+    const int decile = static_cast<int>(f * 10.0);
+    if (seconds > 1.0 && decile > LastDecile)
+    {
+      LastDecile = decile;
+      std::cerr << "exactmat: " << What << " " << 10 * decile << "%\n";
+    }
+  }
+  std::string What;
+  std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+  int LastDecile = -1;
 };
 
 vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine* errors, std::string& label)
@@ -232,28 +304,10 @@ int run2D(const Arguments& a)
     mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
   }
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
-  // Progress on long runs: a line on stderr every 10% once a second has passed.
-  const auto start = std::chrono::steady_clock::now();
-  int lastDecile = -1;
-  vtkNew<vtkCallbackCommand> progress;
-  struct ProgressState
-  {
-    std::chrono::steady_clock::time_point start;
-    int* lastDecile;
-  } state{ start, &lastDecile };
-  progress->SetClientData(&state);
-  progress->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-    auto* s = static_cast<ProgressState*>(client);
-    const double f = *static_cast<double*>(call);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s->start).count();
-    const int decile = static_cast<int>(f * 10.0);
-    if (seconds > 1.0 && decile > *s->lastDecile)
-    {
-      *s->lastDecile = decile;
-      std::cerr << "exactmat: tracing " << 10 * decile << "%\n";
-    }
-  });
+  vtkNew<ProgressLine> progress;
+  progress->What = "tracing";
   mat->AddObserver(vtkCommand::ProgressEvent, progress);
+  const auto start = std::chrono::steady_clock::now();
   mat->Update();
   const double traceMs =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -328,6 +382,132 @@ int run2D(const Arguments& a)
   }
   return 0;
 }
+
+int run25D(const Arguments& a)
+{
+  const bool revolve = a.command == "revolve";
+  if (!revolve && a.length <= 0.0)
+    usageError("extrude needs --length L");
+  vtkNew<ErrorLine> errors;
+  std::string label;
+  vtkSmartPointer<vtkUnstructuredGrid> profile = loadBoundary(a, errors, label);
+  if (!profile)
+    return 1;
+  double bounds[6];
+  profile->GetBounds(bounds);
+  double axis[6] = { bounds[0] - 0.5 * (bounds[1] - bounds[0]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]), 0.0, 1.0, 0.0 };
+  for (size_t i = 0; i < a.axis.size(); ++i)
+    axis[i] = a.axis[i];
+
+  vtkNew<vtkMAT25DFilter> mat;
+  mat->SetInputData(profile);
+  if (revolve)
+  {
+    mat->SetSweepTypeToRevolution();
+    mat->SetAngle(a.angle);
+    mat->SetAxisOrigin(axis);
+    mat->SetAxisDirection(axis + 3);
+  }
+  else
+  {
+    mat->SetLength(a.length);
+  }
+  mat->SetTolerance(a.tolerance);
+  if (a.step > 0.0)
+  {
+    mat->FixedStepOn();
+    mat->SetStep(a.step);
+    mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
+  }
+  mat->SetSheetResolution(a.sheetResolution);
+  mat->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<ProgressLine> progress;
+  progress->What = "computing";
+  mat->AddObserver(vtkCommand::ProgressEvent, progress);
+  const auto start = std::chrono::steady_clock::now();
+  mat->Update();
+  const double totalMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (errors->Failed)
+    return 1;
+  vtkPolyData* out = mat->GetOutput();
+
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(out);
+  writer->SetFileName(a.output.c_str());
+  writer->SetDataModeToBinary();
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  if (writer->Write() != 1 || errors->Failed)
+  {
+    std::cerr << "exactmat: error: cannot write '" << a.output << "'\n";
+    return 1;
+  }
+  const double profileMs = 1e3 * mat->GetProfileSeconds();
+  const double buildMs = 1e3 * mat->GetConstructionSeconds();
+  char sweep[160];
+  if (revolve)
+    std::snprintf(sweep, sizeof sweep, "revolved by %g deg about (%g, %g, %g) + t (%g, %g, %g)",
+      a.angle, axis[0], axis[1], axis[2], axis[3], axis[4], axis[5]);
+  else
+    std::snprintf(sweep, sizeof sweep, "extruded by %g", a.length);
+  std::printf("ExactMAT 2.5D medial axis transform of %s, %s\n", label.c_str(), sweep);
+  std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
+  std::printf("  seams               %d\n", mat->GetNumberOfSeams());
+  std::printf("  skeletal edges      %d\n", mat->GetNumberOfSkeletalEdges());
+  std::printf("  sheets              %d (%lld triangles)\n", mat->GetNumberOfSheets(),
+    static_cast<long long>(out->GetNumberOfPolys()));
+  std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
+  std::printf("  time                %.2f ms profile MAT, %.2f ms 3D construction, %.2f ms verification\n",
+    profileMs, buildMs, std::max(0.0, totalMs - profileMs - buildMs));
+  std::printf("  verified            %d points: largest |distance to boundary - radius| / size %.3g, "
+              "touchpoint mismatches %d\n",
+    mat->GetNumberOfVerifiedPoints(), mat->GetMaximumVerifiedError(),
+    mat->GetNumberOfTouchpointMismatches());
+  std::printf("  wrote               %s\n", a.output.c_str());
+
+  if (!a.png.empty())
+  {
+    // The solid for the picture: the same profile swept by vtkNURBSSource.
+    vtkNew<vtkNURBSSource> solid;
+    solid->SetShape(vtkNURBSSource::UserDefined);
+    for (const exactmat::CurvePiece& piece : exactmat::curvePiecesFromGrid(profile))
+    {
+      const exactmat::NurbsCurve c = piece.curve.toNurbs();
+      vtkNew<vtkDoubleArray> knots, weights;
+      vtkNew<vtkPoints> points;
+      for (double k : c.knots())
+        knots->InsertNextValue(k);
+      for (int i = 0; i < c.controlPointCount(); ++i)
+      {
+        points->InsertNextPoint(c.controlPoint(i).data());
+        weights->InsertNextValue(c.weight(i));
+      }
+      solid->AddCurve(c.degree(), knots, points, weights);
+    }
+    solid->SetSweep(revolve ? vtkNURBSSource::SweepRevolution : vtkNURBSSource::SweepExtrusion);
+    solid->SetLength(a.length);
+    solid->SetSweepAngle(a.angle);
+    solid->SetSweepAxisOrigin(axis);
+    solid->SetSweepAxisDirection(axis + 3);
+    solid->AddObserver(vtkCommand::ErrorEvent, errors);
+    solid->Update();
+    if (errors->Failed)
+      return 1;
+    std::string error;
+    const std::string title = "MAT of " + label + " " + (revolve ? "revolved" : "extruded") + ": " +
+      std::to_string(mat->GetNumberOfJunctions()) + " junctions, " +
+      std::to_string(mat->GetNumberOfSeams()) + " seams, " +
+      std::to_string(mat->GetNumberOfSheets()) + " sheets";
+    if (!writeSolidMATPicture(solid->GetOutput(), out, a.png, title, error))
+    {
+      std::cerr << "exactmat: error: " << error << "\n";
+      return 1;
+    }
+    std::printf("  wrote               %s\n", a.png.c_str());
+  }
+  return 0;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -343,8 +523,8 @@ int main(int argc, char* argv[])
       std::cout << vtkNURBSSource::GetCatalogueShapeName(i) << "\n";
     return 0;
   }
-  if (a.command != "2d")
-    usageError("unknown command '" + a.command + "' (this version has: 2d, shapes)");
+  if (a.command != "2d" && a.command != "extrude" && a.command != "revolve")
+    usageError("unknown command '" + a.command + "' (this version has: 2d, extrude, revolve, shapes)");
   // Off-screen rendering with this VTK needs an X display: run under Xvfb when none is set.
   const char* display = std::getenv("DISPLAY");
   if (!a.png.empty() && (!display || !*display) && !std::getenv("EXACTMAT_NO_XVFB"))
@@ -361,7 +541,7 @@ int main(int argc, char* argv[])
   }
   try
   {
-    return run2D(a);
+    return a.command == "2d" ? run2D(a) : run25D(a);
   }
   catch (const exactmat::InputError& e)
   {
