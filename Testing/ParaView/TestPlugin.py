@@ -45,6 +45,23 @@ for i in range(medial.GetNumberOfPoints()):
     x, y, z = medial.GetPoint(i)
     assert abs(math.hypot(x, y) - 1.375) < 1e-12 and abs(r.GetValue(i) - 0.625) < 1e-12
 
+# The 2.5D filter: the 4 x 2 rectangle extruded by 3 has junctions (+-1, 0, 1), (+-1, 0, 2).
+profile = NURBSSource(registrationName="profile")  # noqa: F821
+profile.Shape = "rectangle"
+mat25 = MAT25DFilter(Input=profile)  # noqa: F821
+mat25.Length = 3.0
+mat25.UpdatePipeline()
+solidMAT = servermanager.Fetch(mat25)
+assert solidMAT.GetNumberOfVerts() == 4, solidMAT.GetNumberOfVerts()
+kind = solidMAT.GetPointData().GetArray("PointType")
+r25 = solidMAT.GetPointData().GetArray("Radius")
+junctions = [solidMAT.GetPoint(i) for i in range(solidMAT.GetNumberOfPoints()) if kind.GetValue(i) == 2]
+assert len(junctions) == 4 and all(abs(abs(p[0]) - 1) < 1e-12 and abs(p[1]) < 1e-12 for p in junctions), junctions
+assert abs(r25.GetRange()[1] - 1.0) < 1e-12
+profile.Sweep = "Extrusion"
+profile.UpdatePipeline()
+assert servermanager.Fetch(profile).GetCellType(0) == 77  # the swept solid: Bezier quadrilaterals
+
 # The catalogue is selectable by name; a 3D shape gives Bezier quadrilaterals.
 source.Shape = "pillow"
 source.UpdatePipeline()

@@ -13,7 +13,7 @@ from vtkmodules.vtkCommonDataModel import vtkGenericCell
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
 import exactmat
-from exactmat import vtkMAT2DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
+from exactmat import vtkMAT25DFilter, vtkMAT2DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GEOMETRY_TOLERANCE = 1e-12
@@ -141,7 +141,10 @@ class PythonPackage(unittest.TestCase):
         for prop in proxy:
             if prop.tag in ("DoubleVectorProperty", "IntVectorProperty"):
                 name = prop.get("name")
-                self.assertEqual(float(getattr(instance, "Get" + name)()), float(prop.get("default_values")), name)
+                value = getattr(instance, "Get" + name)()
+                values = value if isinstance(value, tuple) else (value,)
+                defaults = tuple(float(v) for v in prop.get("default_values").split())
+                self.assertEqual(tuple(float(v) for v in values), defaults, name)
                 checked += 1
         self.assertEqual(checked, expected_count)
         return proxy
@@ -149,9 +152,56 @@ class PythonPackage(unittest.TestCase):
     def test_mat2d_defaults_equal_the_paraview_xml(self):
         self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 5)
 
+    def test_mat25d_filter_box_through_numpy(self):
+        # The 4 x 2 rectangle extruded by 3: junctions (+-1, 0, 1) and (+-1, 0, 2), radius 1.
+        source = vtkNURBSSource()
+        source.SetShapeName("rectangle")
+        mat = vtkMAT25DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.SetLength(3.0)
+        mat.Update()
+        out = mat.GetOutput()
+        self.assertEqual(mat.GetNumberOfJunctions(), 4)
+        self.assertEqual(out.GetNumberOfVerts(), 4)
+        points = vtk_to_numpy(out.GetPoints().GetData())
+        radius = vtk_to_numpy(out.GetPointData().GetArray("Radius"))
+        kind = vtk_to_numpy(out.GetPointData().GetArray("PointType"))
+        junctions = points[kind == 2]
+        np.testing.assert_allclose(np.sort(np.abs(junctions[:, 0])), 1.0, atol=1e-12)
+        np.testing.assert_allclose(np.sort(junctions[:, 2]), [1, 1, 2, 2], atol=1e-12)
+        np.testing.assert_allclose(radius[kind == 2], 1.0, atol=1e-12)
+        # Every profile-face sheet point lies at its radius from a profile face (z = r or 3 - r).
+        self.assertLessEqual(mat.GetMaximumVerifiedError(), 1e-12)
+        self.assertEqual(mat.GetNumberOfTouchpointMismatches(), 0)
+
+    def test_mat25d_filter_errors_reach_python(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("rectangle")
+        mat = vtkMAT25DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.SetLength(1.0)
+        errors = exactmat.ErrorObserver().watch(mat)
+        mat.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, r"shorter than 2·Rmax = 2 \(Rmax = 1"):
+            errors.check()
+
+    def test_swept_solid_from_the_source(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("l-shape")
+        source.SetSweep(vtkNURBSSource.SweepRevolution)
+        source.SetSweepAngle(90.0)
+        source.SetSweepAxisOrigin(-1.0, 0.0, 0.0)
+        source.Update()
+        solid = source.GetOutput()
+        self.assertGreater(solid.GetNumberOfCells(), 6)
+        self.assertEqual(solid.GetCellType(0), 77)  # VTK_BEZIER_QUADRILATERAL
+
+    def test_mat25d_defaults_equal_the_paraview_xml(self):
+        self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 12)
+
     def test_defaults_equal_the_paraview_xml(self):
-        proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 9)
-        entries = proxy.findall(".//EnumerationDomain/Entry")
+        proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 13)
+        entries = proxy.find("IntVectorProperty[@name='Shape']").findall(".//EnumerationDomain/Entry")
         self.assertEqual(len(entries), vtkNURBSSource.GetNumberOfCatalogueShapes())
         for entry in entries:
             self.assertEqual(vtkNURBSSource.GetCatalogueShapeName(int(entry.get("value"))), entry.get("text"))

@@ -82,6 +82,60 @@ class ExactmatCLI(unittest.TestCase):
             self.assertEqual(r.returncode, 2)
             self.assertIn("usage:", r.stderr)
 
+    def test_extrude_default_shape(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r = run("extrude", "--length", "3", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("extruded by 3", r.stdout)
+            # 11 profile branch points, each a junction near both profile faces.
+            self.assertEqual(summary_value(r.stdout, "junctions"), 22)
+            self.assertIn("touchpoint mismatches 0", r.stdout)
+            m = re.search(r"size ([-+0-9.eE]+), touchpoint", r.stdout)
+            self.assertLessEqual(float(m.group(1)), 1e-9)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(tmp, "exactmat-extrude.vtp"))
+            reader.Update()
+            mat = reader.GetOutput()
+            self.assertEqual(mat.GetNumberOfVerts(), 22)
+            self.assertGreater(mat.GetNumberOfPolys(), 1000)
+            for name in ("Radius", "PointType", "Touchpoints"):
+                self.assertIsNotNone(mat.GetPointData().GetArray(name), name)
+            for name in ("ElementType", "ElementId", "SegmentId", "Governors"):
+                self.assertIsNotNone(mat.GetCellData().GetAbstractArray(name), name)
+            lo, hi = mat.GetPointData().GetArray("Radius").GetRange()
+            self.assertAlmostEqual(lo, 0.0)
+            self.assertLess(hi, 1.0)
+
+    def test_revolve_with_axis_and_png(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            png = os.path.join(tmp, "rev.png")
+            r = run("revolve", "--shape", "rectangle", "--angle", "90", "--axis", "-3,0,0,0,1,0",
+                    "-o", os.path.join(tmp, "rev.vtp"), "--png", png)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 4)
+            self.assertIn("touchpoint mismatches 0", r.stdout)
+            image = vtkPNGReader()
+            image.SetFileName(png)
+            image.Update()
+            self.assertEqual(image.GetOutput().GetDimensions()[:2], (1200, 900))
+            # A torus: no junctions, one core circle.
+            r = run("revolve", "--shape", "circle", "--axis", "-3,0,0", "-o", os.path.join(tmp, "t.vtp"))
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 0)
+
+    def test_sweep_errors(self):
+        r = run("extrude")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("needs --length", r.stderr)
+        r = run("extrude", "--shape", "rectangle", "--length", "1.5", "-o", "/dev/null")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("shorter than 2·Rmax = 2", r.stderr)
+        r = run("revolve", "--shape", "rectangle", "--axis", "0,0,0", "-o", "/dev/null")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("crosses the profile", r.stderr)
+        r = run("revolve", "--axis", "1,2")
+        self.assertEqual(r.returncode, 2)
+
     def test_shapes_lists_the_catalogue(self):
         r = run("shapes")
         self.assertEqual(r.returncode, 0)
