@@ -157,6 +157,19 @@ private:
     return ids;
   }
 
+  /// Only the two seam points of T_τ(p) (a sample between sheet columns).
+  std::vector<int> seamPoints(const Vec2& p, double r)
+  {
+    const double t0 = W.capSpan(p, r), t1 = S - t0;
+    if (t1 - t0 <= 1e-12 * S)
+    {
+      const int id = addPoint(W.place(p, 0.5 * S), r, MedialPoint3DType::Seam, 4);
+      return { id, id };
+    }
+    return { addPoint(W.place(p, t0), r, MedialPoint3DType::Seam, 3),
+      addPoint(W.place(p, t1), r, MedialPoint3DType::Seam, 3) };
+  }
+
   void buildNode(int n)
   {
     const MedialNode& node = M.nodes[n];
@@ -243,13 +256,32 @@ private:
     }
     samples.push_back(seg.samples.back());
     const size_t n = samples.size();
+    // Every sample gives seam points; sheets take columns about SheetResolution apart (a
+    // fixed 1e-3 step would otherwise make a hundred thousand sheet points of a box).
+    std::vector<bool> sheetColumn(n, false);
+    sheetColumn.front() = sheetColumn.back() = true;
+    const double spacing = std::max(1e-6, O.sheetResolution) * Size;
+    double travelled = 0.0;
+    for (size_t i = 1; i + 1 < n; ++i)
+    {
+      travelled += (samples[i].x - samples[i - 1].x).norm();
+      const double ahead = (samples.back().x - samples[i].x).norm();
+      if (travelled >= spacing && ahead >= 0.5 * spacing)
+      {
+        sheetColumn[i] = true;
+        travelled = 0.0;
+      }
+    }
     std::vector<std::vector<int>> columns(n);
     columns.front() = NodeColumn[seg.startNode];
     columns.back() = NodeColumn[seg.endNode];
     for (size_t i = 1; i + 1 < n; ++i)
     {
       const MedialSample& s = samples[i];
-      columns[i] = column(s.x, s.radius, MedialPoint3DType::Seam, 3, MedialPoint3DType::Sheet, 2);
+      if (sheetColumn[i])
+        columns[i] = column(s.x, s.radius, MedialPoint3DType::Seam, 3, MedialPoint3DType::Sheet, 2);
+      else if (!W.closed())
+        columns[i] = seamPoints(s.x, s.radius);
     }
     std::vector<BoundaryLocation> sideA, sideB;
     for (const MedialSample& s : samples)
@@ -269,12 +301,14 @@ private:
     sheet.governors = govAB;
     sheet.profileSegment = k;
     const int rows = static_cast<int>(columns.front().size());
-    for (size_t i = 0; i + 1 < n; ++i)
+    for (size_t i = 0, next = 1; next < n; i = next++)
     {
+      while (!sheetColumn[next])
+        ++next;
       for (int j = 0; j < (W.closed() ? rows : rows - 1); ++j)
       {
         const int j1 = (j + 1) % rows;
-        quad(sheet, columns[i][j], columns[i + 1][j], columns[i + 1][j1], columns[i][j1]);
+        quad(sheet, columns[i][j], columns[next][j], columns[next][j1], columns[i][j1]);
       }
     }
     if (!sheet.triangles.empty())
@@ -297,7 +331,8 @@ private:
         for (size_t i = 0; i < n; ++i)
         {
           const MedialSample& s = samples[i];
-          strip.push_back({ s.foot[side].point, s.x, s.radius, seam[i] });
+          if (sheetColumn[i])
+            strip.push_back({ s.foot[side].point, s.x, s.radius, seam[i] });
         }
         std::vector<int> sg = side == 0 ? govA : govB;
         sg.insert(sg.begin(), E + face);

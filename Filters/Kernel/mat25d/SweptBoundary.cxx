@@ -88,6 +88,7 @@ bool SweptBoundary::sameContact(
     return true;
   if (gap > 0.2 * radius)
     return false;
+  // (radius here: the ball's radius plus rounding.)
   // Two minima close together are one contact when the boundary between them stays
   // inside the ball (a flat valley: the ball osculates there), two when it bulges out.
   const Vec3 mid = 0.5 * (a + b);
@@ -146,8 +147,11 @@ std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, do
         keep = false;
       }
     }
+    // The valley test uses the ball's own radius (the nearest minimum), not the counting
+    // tolerance: near an osculating point two true touchpoints are only a hair apart.
+    const double valley = minima.front().distance + 1e-12 * Size;
     for (const Contact& q : out)
-      keep = keep && !sameContact(x, radius, q.point, m.point, merge);
+      keep = keep && !sameContact(x, valley, q.point, m.point, merge);
     if (keep)
       out.push_back({ m.point, m.distance, m.source });
   }
