@@ -21,7 +21,6 @@ using namespace exactmat;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 double msSince(std::chrono::steady_clock::time_point t0)
 {

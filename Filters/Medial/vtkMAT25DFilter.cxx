@@ -165,7 +165,7 @@ int vtkMAT25DFilter::RequestData(
     sweep.kind = this->SweepType == Revolution ? exactmat::SweepKind::Revolution
                                                 : exactmat::SweepKind::Extrusion;
     sweep.length = this->Length;
-    sweep.angle = this->Angle * 3.14159265358979323846 / 180.0;
+    sweep.angle = this->Angle * exactmat::Pi / 180.0;
     sweep.axisPoint = exactmat::Vec3(this->AxisOrigin[0], this->AxisOrigin[1], this->AxisOrigin[2]);
     sweep.axisDirection =
       exactmat::Vec3(this->AxisDirection[0], this->AxisDirection[1], this->AxisDirection[2]);

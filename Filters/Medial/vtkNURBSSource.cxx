@@ -195,7 +195,7 @@ int vtkNURBSSource::RequestData(
       sweep.kind = this->Sweep == SweepRevolution ? exactmat::SweepKind::Revolution
                                              : exactmat::SweepKind::Extrusion;
       sweep.length = this->Length;
-      sweep.angle = this->SweepAngle * 3.14159265358979323846 / 180.0;
+      sweep.angle = this->SweepAngle * exactmat::Pi / 180.0;
       sweep.axisPoint = exactmat::Vec3(
         this->SweepAxisOrigin[0], this->SweepAxisOrigin[1], this->SweepAxisOrigin[2]);
       sweep.axisDirection = exactmat::Vec3(

@@ -16,7 +16,6 @@ using namespace exactmat;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 // Global distance = Radius to this fraction of the solid's size (the bound).
 constexpr double VerifiedDistanceTolerance = 1e-9;
 

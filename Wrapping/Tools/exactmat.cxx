@@ -193,6 +193,34 @@ public:
   bool Failed = false;
 };
 
+// The 2D MAT settings shared by vtkMAT2DFilter and the profile of vtkMAT25DFilter.
+template <typename Filter>
+void setProfileSteps(Filter* mat, const Arguments& a)
+{
+  mat->SetTolerance(a.tolerance);
+  if (a.step > 0.0)
+  {
+    mat->FixedStepOn();
+    mat->SetStep(a.step);
+    mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
+  }
+}
+
+bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary();
+  writer->AddObserver(vtkCommand::ErrorEvent, errors);
+  if (writer->Write() != 1 || errors->Failed)
+  {
+    std::cerr << "exactmat: error: cannot write '" << path << "'\n";
+    return false;
+  }
+  return true;
+}
+
 // Progress on long runs: a line on stderr every 10% once a second has passed.
 class ProgressLine : public vtkCommand
 {
@@ -295,14 +323,8 @@ int run2D(const Arguments& a)
 
   vtkNew<vtkMAT2DFilter> mat;
   mat->SetInputData(boundary);
-  mat->SetTolerance(a.tolerance);
+  setProfileSteps(mat.GetPointer(), a);
   mat->VerifyOutputOff(); // verified below, independently, and timed apart
-  if (a.step > 0.0)
-  {
-    mat->FixedStepOn();
-    mat->SetStep(a.step);
-    mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
-  }
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressLine> progress;
   progress->What = "tracing";
@@ -337,16 +359,8 @@ int run2D(const Arguments& a)
   const double verifyMs =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - verifyStart).count();
 
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(out);
-  writer->SetFileName(a.output.c_str());
-  writer->SetDataModeToBinary();
-  writer->AddObserver(vtkCommand::ErrorEvent, errors);
-  if (writer->Write() != 1 || errors->Failed)
-  {
-    std::cerr << "exactmat: error: cannot write '" << a.output << "'\n";
+  if (!writePolyData(out, a.output, errors))
     return 1;
-  }
 
   const int holes = b.holeCount();
   std::printf("ExactMAT 2D medial axis transform of %s\n", label.c_str());
@@ -413,13 +427,7 @@ int run25D(const Arguments& a)
   {
     mat->SetLength(a.length);
   }
-  mat->SetTolerance(a.tolerance);
-  if (a.step > 0.0)
-  {
-    mat->FixedStepOn();
-    mat->SetStep(a.step);
-    mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
-  }
+  setProfileSteps(mat.GetPointer(), a);
   mat->SetSheetResolution(a.sheetResolution);
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<ProgressLine> progress;
@@ -433,16 +441,8 @@ int run25D(const Arguments& a)
     return 1;
   vtkPolyData* out = mat->GetOutput();
 
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(out);
-  writer->SetFileName(a.output.c_str());
-  writer->SetDataModeToBinary();
-  writer->AddObserver(vtkCommand::ErrorEvent, errors);
-  if (writer->Write() != 1 || errors->Failed)
-  {
-    std::cerr << "exactmat: error: cannot write '" << a.output << "'\n";
+  if (!writePolyData(out, a.output, errors))
     return 1;
-  }
   const double profileMs = 1e3 * mat->GetProfileSeconds();
   const double buildMs = 1e3 * mat->GetConstructionSeconds();
   char sweep[160];

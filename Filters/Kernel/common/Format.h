@@ -10,6 +10,15 @@
 namespace exactmat
 {
 
+/// A number with 9 significant digits ("1.5", not "1.5000000000000000").
+inline std::string format(double v)
+{
+  std::ostringstream os;
+  os.precision(9);
+  os << v;
+  return os.str();
+}
+
 inline std::string format(const Vec3& p)
 {
   std::ostringstream os;

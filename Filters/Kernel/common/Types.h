@@ -14,6 +14,8 @@
 namespace exactmat
 {
 
+constexpr double Pi = 3.14159265358979323846;
+
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Vector4d; ///< homogeneous control point (w·x, w·y, w·z, w)

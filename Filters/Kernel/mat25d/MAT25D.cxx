@@ -1,5 +1,6 @@
 #include "MAT25D.h"
 
+#include "common/Format.h"
 #include "common/InputError.h"
 
 #include <algorithm>
@@ -12,19 +13,9 @@ namespace exactmat
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
-std::string number(double v)
-{
-  std::ostringstream os;
-  os.precision(9);
-  os << v;
-  return os.str();
-}
-
 std::string point2(const Vec2& p)
 {
-  return "(" + number(p.x()) + ", " + number(p.y()) + ")";
+  return "(" + format(p.x()) + ", " + format(p.y()) + ")";
 }
 
 bool anyContinuum(const std::vector<BoundaryLocation>& fps)
@@ -84,15 +75,15 @@ private:
       return;
     if (W.kind() == SweepKind::Extrusion)
     {
-      fail("2.5D MAT: the extrusion of length ", number(S), " is shorter than 2·Rmax = ",
-        number(2.0 * need.radius), " (Rmax = ", number(need.radius), " at profile point ",
+      fail("2.5D MAT: the extrusion of length ", format(S), " is shorter than 2·Rmax = ",
+        format(2.0 * need.radius), " (Rmax = ", format(need.radius), " at profile point ",
         point2(need.at), "); the end faces must be at least one maximal-disk diameter apart "
         "(thesis §5.5.1)");
     }
-    fail("2.5D MAT: the revolution by ", number(S * 180.0 / Pi), "° is smaller than "
-      "2·asin(r/x) = ", number(2.0 * need.capSpan * 180.0 / Pi), "° for the maximal disk of "
-      "radius r = ", number(need.radius), " at profile point ", point2(need.at), ", x = ",
-      number(W.axisDistance(need.at)), " from the axis; the end faces must be at least one "
+    fail("2.5D MAT: the revolution by ", format(S * 180.0 / Pi), "° is smaller than "
+      "2·asin(r/x) = ", format(2.0 * need.capSpan * 180.0 / Pi), "° for the maximal disk of "
+      "radius r = ", format(need.radius), " at profile point ", point2(need.at), ", x = ",
+      format(W.axisDistance(need.at)), " from the axis; the end faces must be at least one "
       "maximal-disk diameter apart (thesis §5.5.1)");
   }
 

@@ -13,16 +13,6 @@ namespace exactmat
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
-
-std::string number(double v)
-{
-  std::ostringstream os;
-  os.precision(9);
-  os << v;
-  return os.str();
-}
-
 // True when the Bernstein polynomial is > 0 on all of [0,1]: coefficients decide, else
 // subdivide (bounded depth: a polynomial still undecided at 2^-30 touches zero).
 bool positiveOnUnit(const BernsteinPoly& f, int depth = 0)
@@ -75,13 +65,13 @@ SweepMap::SweepMap(const Boundary2D& profile, const Sweep& sweep)
   if (S.kind == SweepKind::Extrusion)
   {
     if (!(S.length > 0.0) || !std::isfinite(S.length))
-      fail("extrusion: the length must be positive and finite (got ", number(S.length), ")");
+      fail("extrusion: the length must be positive and finite (got ", format(S.length), ")");
     Span = S.length;
     return;
   }
   if (!(S.angle > 0.0) || !(S.angle <= 2.0 * Pi * (1.0 + 1e-12)))
   {
-    fail("revolution: the angle must be in (0°, 360°] (got ", number(S.angle * 180.0 / Pi),
+    fail("revolution: the angle must be in (0°, 360°] (got ", format(S.angle * 180.0 / Pi),
       "°)");
   }
   Span = std::min(S.angle, 2.0 * Pi);
@@ -232,8 +222,8 @@ bool SweepMap::projectOnProfileFace(int face, const Vec3& x, Vec2& foot, double&
 std::string SweepMap::describe() const
 {
   if (S.kind == SweepKind::Extrusion)
-    return "extrusion of length " + number(Span);
-  return "revolution by " + number(Span * 180.0 / Pi) + "°";
+    return "extrusion of length " + format(Span);
+  return "revolution by " + format(Span * 180.0 / Pi) + "°";
 }
 
 } // namespace exactmat
