@@ -26,7 +26,8 @@
  * 5 on a convex edge or vertex of the solid, 6 centre of a ball touching a circle);
  * `Touchpoints` (int: distinct touching points of the ball by construction, 0 = not
  * finite). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
- * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet), `ElementId`
+ * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet, 6 mid-sheet),
+ * `ElementId`
  * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
  * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.
  * "start,2,5"; "start"/"end" = the profile faces, "v<vertex>" = a reflex edge).

@@ -21,7 +21,8 @@
  * 3 seam end, 4 skeletal edge, 5 on a convex edge/vertex of the solid (radius 0),
  * 6 centre of a ball touching a whole circle), `Touchpoints` (how many distinct points of
  * the boundary the ball touches; 0 when not a finite number). Cell data: `ElementType`
- * (0 junction, 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet),
+ * (0 junction, 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet,
+ * 6 mid-sheet between the profile faces),
  * `ElementId` (cells of one element share it), `SegmentId` (the profile MAT segment or
  * node it comes from), `Governors` (string: the boundary entities the element is
  * equidistant to: the EdgeId of the profile edge a side face sweeps, "start"/"end" for the
@@ -32,10 +33,12 @@
  * (global distance = Radius, touchpoint counts) — every junction, seam, seam-end and
  * skeletal-edge point, and sheet points evenly spread up to MaximumSheetPointsVerified.
  *
- * @warning The method needs the profile faces at least one maximal-disk diameter apart
- * (Length ≥ 2·Rmax; Angle ≥ 2·asin(r/x) at every profile MAT point). Shorter spans, axes
- * that cross the profile or leave its plane, and bad profiles make RequestData fail with an
- * error that names the problem (Rmax and the span, the edge, …).
+ * Spans shorter than the thesis' method needs (Length < 2·Rmax; Angle < 2·asin(r/x)) are
+ * handled: the MAT then has a mid-sheet between the two profile faces, bounded by seams
+ * touching both faces and one side, with junctions where the profile MAT crosses it.
+ *
+ * @warning Axes that cross the profile or leave its plane, lengths ≤ 0, angles outside
+ * (0, 360] and bad profiles make RequestData fail with an error that names the problem.
  */
 #ifndef vtkMAT25DFilter_h
 #define vtkMAT25DFilter_h

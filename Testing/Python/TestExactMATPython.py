@@ -179,11 +179,28 @@ class PythonPackage(unittest.TestCase):
         source.SetShapeName("rectangle")
         mat = vtkMAT25DFilter()
         mat.SetInputConnection(source.GetOutputPort())
-        mat.SetLength(1.0)
+        mat.SetSweepTypeToRevolution()  # about the y axis, which crosses the rectangle
         errors = exactmat.ErrorObserver().watch(mat)
         mat.Update()
-        with self.assertRaisesRegex(exactmat.ExactMATError, r"shorter than 2·Rmax = 2 \(Rmax = 1"):
+        with self.assertRaisesRegex(exactmat.ExactMATError, r"touches or crosses the profile at edge"):
             errors.check()
+
+    def test_mat25d_short_extrusion_has_a_mid_sheet(self):
+        # The 4 x 2 x 1.5 box (shorter than 2 Rmax = 2): junctions (+-1.25, +-0.25, 0.75).
+        source = vtkNURBSSource()
+        source.SetShapeName("rectangle")
+        mat = vtkMAT25DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.SetLength(1.5)
+        mat.Update()
+        out = mat.GetOutput()
+        points = vtk_to_numpy(out.GetPoints().GetData())
+        kind = vtk_to_numpy(out.GetPointData().GetArray("PointType"))
+        junctions = points[kind == 2]
+        self.assertEqual(len(junctions), 4)
+        np.testing.assert_allclose(np.abs(junctions), [[1.25, 0.25, 0.75]] * 4, atol=1e-12)
+        self.assertIn(6, vtk_to_numpy(out.GetCellData().GetArray("ElementType")))  # mid-sheet
+        self.assertLessEqual(mat.GetMaximumVerifiedError(), 1e-12)
 
     def test_swept_solid_from_the_source(self):
         source = vtkNURBSSource()

@@ -66,8 +66,7 @@ const char* Usage = R"(usage:
   --png OUT.png  a picture of the boundary and the MAT coloured by radius
 
   extrude, revolve: the MAT of the solid swept by the profile PROFILE (2D input as above)
-  --length L     extrusion length along the profile plane's normal (needed; at least
-                 2 x the profile's largest inscribed radius)
+  --length L     extrusion length along the profile plane's normal (needed)
   --angle DEG    revolution angle, (0, 360] (default 360)
   --axis P[,D]   revolution axis through point P along D (default D = 0,1,0); default axis:
                  parallel to y, half the profile's width left of it

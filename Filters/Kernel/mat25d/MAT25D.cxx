@@ -2,6 +2,7 @@
 
 #include "common/Format.h"
 #include "common/InputError.h"
+#include "mat2d/Bisector.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +14,6 @@ namespace exactmat
 
 namespace
 {
-std::string point2(const Vec2& p)
-{
-  return "(" + format(p.x()) + ", " + format(p.y()) + ")";
-}
-
 bool anyContinuum(const std::vector<BoundaryLocation>& fps)
 {
   return std::any_of(fps.begin(), fps.end(), [](const BoundaryLocation& f) { return f.continuum; });
@@ -29,7 +25,9 @@ struct StripColumn
 {
   Vec2 foot, x;
   double r = 0.0;
-  int top = -1;
+  int top = -1;       ///< the column's last point: on a seam (or the truncation point)
+  double tTop = 1.0;  ///< where the column ends on F → x (< 1: at the mid-surface)
+  int midTop = -1;    ///< above the mid-surface: the point T_{S/2}(x) the mid-sheet reaches
 };
 
 class Builder
@@ -49,9 +47,9 @@ public:
     if (M.nodes.empty())
       fail("2.5D MAT: the profile's 2D MAT is empty");
     S = W.span();
-    checkSpan();
     chooseResolution();
     NodeColumn.resize(M.nodes.size());
+    NodeMid.assign(M.nodes.size(), -1);
     for (size_t n = 0; n < M.nodes.size(); ++n)
       buildNode(static_cast<int>(n));
     const size_t total = M.segments.size();
@@ -65,28 +63,6 @@ public:
   }
 
 private:
-  // The method's precondition (§5.5.1): the profile faces a maximal-disk diameter apart.
-  void checkSpan() const
-  {
-    if (W.closed())
-      return;
-    const RequiredSpan need = requiredHalfSpan(M, W);
-    if (2.0 * need.capSpan <= S * (1.0 + 1e-12))
-      return;
-    if (W.kind() == SweepKind::Extrusion)
-    {
-      fail("2.5D MAT: the extrusion of length ", format(S), " is shorter than 2·Rmax = ",
-        format(2.0 * need.radius), " (Rmax = ", format(need.radius), " at profile point ",
-        point2(need.at), "); the end faces must be at least one maximal-disk diameter apart "
-        "(thesis §5.5.1)");
-    }
-    fail("2.5D MAT: the revolution by ", format(S * 180.0 / Pi), "° is smaller than "
-      "2·asin(r/x) = ", format(2.0 * need.capSpan * 180.0 / Pi), "° for the maximal disk of "
-      "radius r = ", format(need.radius), " at profile point ", point2(need.at), ", x = ",
-      format(W.axisDistance(need.at)), " from the axis; the end faces must be at least one "
-      "maximal-disk diameter apart (thesis §5.5.1)");
-  }
-
   void chooseResolution()
   {
     double rhoMax = 0.0;
@@ -173,6 +149,14 @@ private:
     const double r = node.sample.radius;
     using T = MedialPoint3DType;
     std::vector<int> govs = governors(node.footpoints);
+    if (station(x, r) == Station::Above)
+    {
+      // Inside the mid-sheet: the ball meets both profile faces first; no junction, seam
+      // or skeletal edge comes from this node (its point is the mid-sheet's, nodeMid).
+      if (node.type == MedialPointType::CircleCentre)
+        circleProfileSheets(n);
+      return;
+    }
     switch (node.type)
     {
       case MedialPointType::Branch:
@@ -232,20 +216,146 @@ private:
     C.elements.push_back(std::move(e));
   }
 
+  // Where a profile MAT point lies relative to the mid-surface between the profile faces
+  // (the bisector of the two faces: τ = S/2). Above it (spans shorter than 2·capSpan) the
+  // ball meets both profile faces before it could reach its 2D radius.
+  enum class Station
+  {
+    Below,    ///< 2·capSpan < S: the thesis' case
+    Crossing, ///< 2·capSpan = S: a junction touching both faces and two sides
+    Above     ///< 2·capSpan > S: inside the mid-sheet
+  };
+
+  Station station(const Vec2& p, double r) const
+  {
+    if (W.closed())
+      return Station::Below;
+    const double d = 2.0 * W.capSpan(p, r) - S;
+    return d > 1e-12 * S ? Station::Above : (d >= -1e-12 * S ? Station::Crossing : Station::Below);
+  }
+
+  /// The radius of the ball about T_{S/2}(p) touching both profile faces.
+  double midRadius(const Vec2& p) const
+  {
+    return W.kind() == SweepKind::Extrusion ? 0.5 * S : W.axisDistance(p) * std::sin(0.5 * S);
+  }
+
+  /// Where the segment from footpoint F (radius 0) to MAT point x (radius r) meets the
+  /// mid-surface: t with t·r = midRadius(F + t(x − F)) (midRadius is affine in p).
+  double truncation(const Vec2& foot, const Vec2& x, double r) const
+  {
+    const double m0 = midRadius(foot), m1 = midRadius(x);
+    const double t = m0 / (r - (m1 - m0));
+    return std::clamp(t, 0.0, 1.0);
+  }
+
+  /// The MAT point between samples p (below) and q (above) whose ball touches both profile
+  /// faces: on the pair's bisector with r = midRadius(x) (Bisector::correct at fixed r
+  /// inside a bracketed secant on r). Falls back to interpolation if Newton fails.
+  MedialSample crossing(const MedialSample& p, const MedialSample& q) const
+  {
+    // The generators may change between the samples (a front passing a smooth vertex or
+    // onto a corner): try p's pair, then q's.
+    MedialSample c;
+    if (crossingOnPair(p, q, p, c) || crossingOnPair(p, q, q, c))
+      return c;
+    const double flo = p.radius - midRadius(p.x), fhi = q.radius - midRadius(q.x);
+    const double w = flo / (flo - fhi);
+    c.x = p.x + w * (q.x - p.x);
+    c.radius = p.radius + w * (q.radius - p.radius);
+    c.foot[0] = p.foot[0];
+    c.foot[1] = p.foot[1];
+    return c; // not exact: verification would show it
+  }
+
+  bool crossingOnPair(
+    const MedialSample& p, const MedialSample& q, const MedialSample& pair, MedialSample& c) const
+  {
+    const int ga = pair.foot[0].g, gb = pair.foot[1].g;
+    const Bisector bisector(G, ga, gb);
+    auto start = [&](const MedialSample& m, int k) {
+      return m.foot[k].g == pair.foot[k].g ? m.foot[k].s : pair.foot[k].s;
+    };
+    auto solve = [&](double r, BisectorState& y) {
+      const double w = (r - p.radius) / (q.radius - p.radius);
+      y = { start(p, 0) + w * (start(q, 0) - start(p, 0)), start(p, 1) + w * (start(q, 1) - start(p, 1)), r };
+      if (!bisector.correct(y, 2, 1e-15 * Size))
+        return std::numeric_limits<double>::quiet_NaN();
+      return r - midRadius(bisector.point(y));
+    };
+    double lo = p.radius, hi = q.radius;
+    double flo = p.radius - midRadius(p.x), fhi = q.radius - midRadius(q.x);
+    BisectorState y;
+    bool converged = false;
+    for (int it = 0; it < 100 && !converged; ++it)
+    {
+      double r = (fhi != flo) ? lo - flo * (hi - lo) / (fhi - flo) : 0.5 * (lo + hi);
+      if (!(r > std::min(lo, hi) && r < std::max(lo, hi)))
+        r = 0.5 * (lo + hi);
+      const double f = solve(r, y);
+      if (std::isnan(f))
+        return false;
+      converged = std::abs(f) <= 1e-14 * Size || std::abs(hi - lo) <= 1e-15 * Size;
+      if ((f < 0.0) == (flo < 0.0))
+      {
+        lo = r;
+        flo = f;
+        fhi *= 0.5; // Illinois: keep the stale end from stalling the secant
+      }
+      else
+      {
+        hi = r;
+        fhi = f;
+        flo *= 0.5;
+      }
+    }
+    // A solution past a generator's end belongs to the other pair (the curve beyond its
+    // end is not the boundary).
+    if (!converged || y.sa < 0.0 || y.sa > 1.0 || y.sb < 0.0 || y.sb > 1.0)
+      return false;
+    c.x = bisector.point(y);
+    c.radius = y.r;
+    const double s[2] = { y.sa, y.sb };
+    const int g[2] = { ga, gb };
+    for (int k = 0; k < 2; ++k)
+    {
+      const GeneratorPoint e = G.evaluate(g[k], s[k]);
+      c.foot[k].g = g[k];
+      c.foot[k].s = s[k];
+      c.foot[k].point = e.p;
+      c.foot[k].normal = e.n;
+    }
+    return true;
+  }
+
   void buildSegment(int k)
   {
     const MedialSegment& seg = M.segments[k];
     // Samples that repeat their predecessor or the end node (a tracer's first step can
-    // land on its node) would be a second, mislabelled copy of that point.
-    std::vector<MedialSample> samples{ seg.samples.front() };
+    // land on its node) would be a second, mislabelled copy of that point. Where the
+    // segment passes the mid-surface, the crossing point is inserted.
     const double same = 1e-12 * Size;
-    for (size_t i = 1; i + 1 < seg.samples.size(); ++i)
+    std::vector<MedialSample> samples{ seg.samples.front() };
+    std::vector<Station> kind{ station(seg.samples.front().x, seg.samples.front().radius) };
+    std::vector<bool> inserted{ false }; ///< crossings found between two samples
+    for (size_t i = 1; i < seg.samples.size(); ++i)
     {
-      const Vec2& x = seg.samples[i].x;
-      if ((x - samples.back().x).norm() > same && (x - seg.samples.back().x).norm() > same)
-        samples.push_back(seg.samples[i]);
+      const MedialSample& x = seg.samples[i];
+      const bool last = i + 1 == seg.samples.size();
+      if (!last && ((x.x - samples.back().x).norm() <= same || (x.x - seg.samples.back().x).norm() <= same))
+        continue;
+      const Station st = station(x.x, x.radius);
+      if ((st == Station::Above && kind.back() == Station::Below) ||
+        (st == Station::Below && kind.back() == Station::Above))
+      {
+        samples.push_back(st == Station::Above ? crossing(samples.back(), x) : crossing(x, samples.back()));
+        kind.push_back(Station::Crossing);
+        inserted.push_back(true);
+      }
+      samples.push_back(x);
+      kind.push_back(st);
+      inserted.push_back(false);
     }
-    samples.push_back(seg.samples.back());
     const size_t n = samples.size();
     // Every sample gives seam points; sheets take columns about SheetResolution apart (a
     // fixed 1e-3 step would otherwise make a hundred thousand sheet points of a box).
@@ -257,22 +367,39 @@ private:
     {
       travelled += (samples[i].x - samples[i - 1].x).norm();
       const double ahead = (samples.back().x - samples[i].x).norm();
-      if (travelled >= spacing && ahead >= 0.5 * spacing)
+      if (kind[i] == Station::Crossing || kind[i] != kind[i - 1] || kind[i] != kind[i + 1] ||
+        (travelled >= spacing && ahead >= 0.5 * spacing))
       {
         sheetColumn[i] = true;
         travelled = 0.0;
       }
     }
     std::vector<std::vector<int>> columns(n);
-    columns.front() = NodeColumn[seg.startNode];
-    columns.back() = NodeColumn[seg.endNode];
-    for (size_t i = 1; i + 1 < n; ++i)
+    std::vector<int> mid(n, -1); // above: the point T_{S/2}(x); crossing: the junction
+    for (size_t i = 0; i < n; ++i)
     {
       const MedialSample& s = samples[i];
-      if (sheetColumn[i])
+      const bool node = i == 0 || i + 1 == n;
+      const int nodeId = i == 0 ? seg.startNode : seg.endNode;
+      if (kind[i] == Station::Above)
+      {
+        mid[i] = node ? nodeMid(nodeId) : addPoint(W.place(s.x, 0.5 * S), midRadius(s.x), MedialPoint3DType::Sheet, 2);
+        continue;
+      }
+      if (node)
+        columns[i] = NodeColumn[nodeId];
+      else if (inserted[i])
+      {
+        const int id = addPoint(W.place(s.x, 0.5 * S), s.radius, MedialPoint3DType::Junction, 4);
+        columns[i].assign(Across + 1, id);
+        addCrossingJunction(id, s, k);
+      }
+      else if (sheetColumn[i] || kind[i] == Station::Crossing)
         columns[i] = column(s.x, s.radius, MedialPoint3DType::Seam, 3, MedialPoint3DType::Sheet, 2);
       else if (!W.closed())
         columns[i] = seamPoints(s.x, s.radius);
+      if (kind[i] == Station::Crossing)
+        mid[i] = columns[i].front();
     }
     std::vector<BoundaryLocation> sideA, sideB;
     for (const MedialSample& s : samples)
@@ -286,16 +413,18 @@ private:
     std::sort(govAB.begin(), govAB.end());
     govAB.erase(std::unique(govAB.begin(), govAB.end()), govAB.end());
 
-    // The swept sheet between the seams.
+    // The swept sheet between the seams, where the segment is below the mid-surface.
     MedialElement sheet;
     sheet.type = MedialElementType::SweptSheet;
     sheet.governors = govAB;
     sheet.profileSegment = k;
-    const int rows = static_cast<int>(columns.front().size());
     for (size_t i = 0, next = 1; next < n; i = next++)
     {
       while (!sheetColumn[next])
         ++next;
+      if (columns[i].empty() || columns[next].empty())
+        continue;
+      const int rows = static_cast<int>(columns[i].size());
       for (int j = 0; j < (W.closed() ? rows : rows - 1); ++j)
       {
         const int j1 = (j + 1) % rows;
@@ -307,29 +436,137 @@ private:
     if (W.closed())
       return;
 
-    // The seams on both profile faces, and the profile sheets below them.
+    // The seams on both profile faces (broken where the segment is above the mid-surface).
     for (int face = 0; face < 2; ++face)
     {
-      std::vector<int> seam;
-      for (size_t i = 0; i < n; ++i)
-        seam.push_back(face == 0 ? columns[i].front() : columns[i].back());
       std::vector<int> govs = govAB;
       govs.insert(govs.begin(), E + face);
-      addPolyline(MedialElementType::Seam, seam, govs, k);
-      for (int side = 0; side < 2; ++side)
+      std::vector<int> seam;
+      for (size_t i = 0; i <= n; ++i)
       {
-        std::vector<StripColumn> strip;
-        for (size_t i = 0; i < n; ++i)
+        if (i < n && !columns[i].empty())
         {
-          const MedialSample& s = samples[i];
-          if (sheetColumn[i])
-            strip.push_back({ s.foot[side].point, s.x, s.radius, seam[i] });
+          seam.push_back(face == 0 ? columns[i].front() : columns[i].back());
+          continue;
         }
-        std::vector<int> sg = side == 0 ? govA : govB;
-        sg.insert(sg.begin(), E + face);
-        profileSheet(face, strip, sg, k);
+        addPolyline(MedialElementType::Seam, seam, govs, k);
+        seam.clear();
       }
     }
+    // Per side: the profile sheets below both faces, the mid-sheet and its seam.
+    for (int side = 0; side < 2; ++side)
+    {
+      std::vector<StripColumn> strip;
+      std::vector<int> midSeam;
+      std::vector<int> midGovs = side == 0 ? govA : govB;
+      midGovs.insert(midGovs.begin(), { E, E + 1 });
+      for (size_t i = 0; i < n; ++i)
+      {
+        if (!sheetColumn[i] && kind[i] == Station::Below)
+          continue;
+        const MedialSample& s = samples[i];
+        StripColumn c{ s.foot[side].point, s.x, s.radius, -1 };
+        if (kind[i] == Station::Above)
+        {
+          c.tTop = truncation(c.foot, c.x, c.r);
+          const Vec2 t = c.foot + c.tTop * (c.x - c.foot);
+          c.top = addPoint(W.place(t, 0.5 * S), c.tTop * c.r, MedialPoint3DType::Seam, 3);
+          c.midTop = mid[i];
+        }
+        else if (kind[i] == Station::Crossing)
+        {
+          c.top = c.midTop = mid[i];
+        }
+        strip.push_back(c);
+      }
+      for (int face = 0; face < 2; ++face)
+      {
+        std::vector<int> sg = side == 0 ? govA : govB;
+        sg.insert(sg.begin(), E + face);
+        std::vector<StripColumn> faceStrip = strip;
+        for (size_t i = 0, j = 0; i < n; ++i)
+        {
+          if (!sheetColumn[i] && kind[i] == Station::Below)
+            continue;
+          if (kind[i] == Station::Below)
+            faceStrip[j].top = face == 0 ? columns[i].front() : columns[i].back();
+          ++j;
+        }
+        profileSheet(face, faceStrip, sg, k);
+      }
+      midSheet(strip, midGovs, k);
+      for (const StripColumn& c : strip)
+      {
+        if (c.midTop >= 0)
+        {
+          midSeam.push_back(c.top);
+          continue;
+        }
+        addPolyline(MedialElementType::Seam, midSeam, midGovs, k);
+        midSeam.clear();
+      }
+      addPolyline(MedialElementType::Seam, midSeam, midGovs, k);
+    }
+  }
+
+  void addCrossingJunction(int id, const MedialSample& s, int k)
+  {
+    std::vector<int> govs = governors({ s.foot[0], s.foot[1] });
+    govs.insert(govs.begin(), { E, E + 1 });
+    MedialElement e;
+    e.type = MedialElementType::Junction;
+    e.points = { id };
+    e.governors = std::move(govs);
+    e.profileSegment = k;
+    C.elements.push_back(std::move(e));
+  }
+
+  /// The point T_{S/2}(x) of a node above the mid-surface, shared by its segments.
+  int nodeMid(int n)
+  {
+    if (NodeMid[n] < 0)
+      NodeMid[n] = addPoint(W.place(M.nodes[n].sample.x, 0.5 * S), midRadius(M.nodes[n].sample.x),
+        MedialPoint3DType::Sheet, 2);
+    return NodeMid[n];
+  }
+
+  // The mid-sheet (equidistant to both profile faces) over the strip's upper parts: from
+  // the truncation point T to the MAT point x, at τ = S/2, radius midRadius.
+  void midSheet(const std::vector<StripColumn>& strip, std::vector<int> govs, int k)
+  {
+    std::vector<std::vector<int>> cols(strip.size());
+    for (size_t i = 0; i < strip.size(); ++i)
+    {
+      const StripColumn& c = strip[i];
+      if (c.midTop < 0)
+        continue;
+      if (c.tTop >= 1.0)
+      {
+        cols[i].assign(Levels + 1, c.midTop);
+        continue;
+      }
+      cols[i].push_back(c.top);
+      for (int q = 1; q < Levels; ++q)
+      {
+        const double t = c.tTop + (1.0 - c.tTop) * q / Levels;
+        const Vec2 p = c.foot + t * (c.x - c.foot);
+        cols[i].push_back(addPoint(W.place(p, 0.5 * S), midRadius(p), MedialPoint3DType::Sheet, 2));
+      }
+      cols[i].push_back(c.midTop);
+    }
+    MedialElement sheet;
+    sheet.type = MedialElementType::MidSheet;
+    sheet.governors = std::move(govs);
+    sheet.profileSegment = k;
+    for (size_t i = 0; i + 1 < cols.size(); ++i)
+    {
+      if (cols[i].empty() || cols[i + 1].empty())
+        continue;
+      for (int q = 0; q < Levels; ++q)
+        quad(sheet, cols[i][q], cols[i + 1][q], cols[i + 1][q + 1], cols[i][q + 1]);
+    }
+    if (!sheet.triangles.empty())
+      C.elements.push_back(std::move(sheet));
   }
 
   void addPolyline(MedialElementType type, std::vector<int> ids, std::vector<int> govs, int k)
@@ -373,7 +610,7 @@ private:
       ids.push_back(footId);
       for (int q = 1; q < Levels; ++q)
       {
-        const double t = static_cast<double>(q) / Levels;
+        const double t = c.tTop * q / Levels;
         const Vec2 p = c.foot + t * (c.x - c.foot);
         const double r = t * c.r;
         const double span = W.capSpan(p, r);
@@ -399,30 +636,54 @@ private:
       C.elements.push_back(std::move(sheet));
   }
 
-  // A circular profile: its profile sheets are cones from the circle to the centre.
+  // A circular profile: its profile sheets are cones from the circle to the centre
+  // (truncated at the mid-surface, with a mid-sheet disk, when the span is short).
   void circleProfileSheets(int n)
   {
     const MedialNode& node = M.nodes[n];
     const double h = std::max(1e-6, O.sheetResolution) * Size;
-    for (int face = 0; face < 2; ++face)
+    const bool above = station(node.sample.x, node.sample.radius) == Station::Above;
+    for (const BoundaryLocation& f : node.footpoints)
     {
-      const int apex = face == 0 ? NodeColumn[n].front() : NodeColumn[n].back();
-      for (const BoundaryLocation& f : node.footpoints)
+      double length = 0.0;
+      Vec2 last = G.evaluate(f.g, 0.0).p;
+      for (int i = 1; i <= 16; ++i)
       {
-        double length = 0.0;
-        Vec2 last = G.evaluate(f.g, 0.0).p;
-        for (int i = 1; i <= 16; ++i)
+        const Vec2 p = G.evaluate(f.g, i / 16.0).p;
+        length += (p - last).norm();
+        last = p;
+      }
+      const int count = std::clamp(static_cast<int>(std::ceil(length / h)), 4, 4096);
+      std::vector<StripColumn> strip;
+      for (int i = 0; i <= count; ++i)
+      {
+        StripColumn c{ G.evaluate(f.g, static_cast<double>(i) / count).p, node.sample.x,
+          node.sample.radius, -1 };
+        if (above)
         {
-          const Vec2 p = G.evaluate(f.g, i / 16.0).p;
-          length += (p - last).norm();
-          last = p;
+          c.tTop = truncation(c.foot, c.x, c.r);
+          const Vec2 t = c.foot + c.tTop * (c.x - c.foot);
+          c.top = addPoint(W.place(t, 0.5 * S), c.tTop * c.r, MedialPoint3DType::Seam, 3);
+          c.midTop = nodeMid(n);
         }
-        const int count = std::clamp(static_cast<int>(std::ceil(length / h)), 4, 4096);
-        std::vector<StripColumn> strip;
-        for (int i = 0; i <= count; ++i)
-          strip.push_back({ G.evaluate(f.g, static_cast<double>(i) / count).p, node.sample.x,
-            node.sample.radius, apex });
-        profileSheet(face, strip, { E + face, governorOfGenerator(G, f.g) }, n);
+        strip.push_back(c);
+      }
+      const int g = governorOfGenerator(G, f.g);
+      for (int face = 0; face < 2; ++face)
+      {
+        std::vector<StripColumn> faceStrip = strip;
+        if (!above)
+          for (StripColumn& c : faceStrip)
+            c.top = face == 0 ? NodeColumn[n].front() : NodeColumn[n].back();
+        profileSheet(face, faceStrip, { E + face, g }, n);
+      }
+      if (above)
+      {
+        midSheet(strip, { E, E + 1, g }, n);
+        std::vector<int> seam;
+        for (const StripColumn& c : strip)
+          seam.push_back(c.top);
+        addPolyline(MedialElementType::Seam, seam, { E, E + 1, g }, n);
       }
     }
   }
@@ -458,6 +719,7 @@ private:
   int Across = 4, Levels = 2;
   MedialComplex C;
   std::vector<std::vector<int>> NodeColumn;
+  std::vector<int> NodeMid;
   static constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 };
 } // namespace
@@ -467,22 +729,6 @@ int governorOfGenerator(const Generators& profile, int g)
   const Generator& gen = profile[g];
   const int edges = static_cast<int>(profile.boundary().edges().size());
   return gen.kind == GeneratorKind::Edge ? gen.edge : edges + 2 + gen.vertex;
-}
-
-RequiredSpan requiredHalfSpan(const MedialGraph& profileMAT, const SweepMap& sweep)
-{
-  RequiredSpan need;
-  auto consider = [&](const MedialSample& s) {
-    const double span = sweep.capSpan(s.x, s.radius);
-    if (span > need.capSpan)
-      need = { span, s.radius, s.x };
-  };
-  for (const MedialNode& n : profileMAT.nodes)
-    consider(n.sample);
-  for (const MedialSegment& seg : profileMAT.segments)
-    for (const MedialSample& s : seg.samples)
-      consider(s);
-  return need;
 }
 
 MedialComplex computeMAT25D(const Generators& profile, const MedialGraph& profileMAT,

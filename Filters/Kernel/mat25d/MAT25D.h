@@ -18,10 +18,16 @@
 ///   boundary, so the sheet point is T_τ(F + t(x − F)) with τ = capSpan(·, t·r).
 /// A 360° revolution has no profile faces: the revolved 2D MAT, with no seams from faces.
 ///
-/// The method needs the two profile faces at least one maximal-disk diameter apart
-/// (span ≥ 2·capSpan at every profile MAT point, §5.5.1); otherwise an InputError names
-/// Rmax (or the largest capSpan) and the span. Equality gives degenerate junctions and
-/// seams, built by the same code (points where both seams meet carry one more touchpoint).
+/// Spans shorter than the thesis needs (2·capSpan > span somewhere: an extrusion shorter
+/// than 2·Rmax) are handled too, which chapter 5 leaves out: where a profile MAT point's
+/// ball would reach both profile faces first, the MAT has a **mid-sheet** on the bisector
+/// of the two faces (τ = span/2; radius span/2, or x·sin(span/2) for revolutions). It
+/// covers the strips' upper parts, from the point where t·r reaches that radius (a seam
+/// touching both faces and one side, on the trimmed offset of the profile) to the MAT
+/// point; where a profile MAT segment crosses it, a junction touching both faces and two
+/// sides, solved on the pair's bisector. Span = 2·capSpan exactly gives degenerate
+/// junctions and seams from the same code (points where both seams meet carry one more
+/// touchpoint).
 ///
 /// Governor ids (MedialElement::governors): e ∈ [0, E) the side swept by profile edge e
 /// (Boundary2D edge index), E the start profile face, E + 1 the end one, E + 2 + v the
@@ -46,19 +52,9 @@ struct MAT25DOptions
 };
 
 /// Builds the 3D MAT of the profile swept by `sweep` from the profile's 2D MAT. Throws
-/// InputError when the span is too short for the method (see above) or the 2D MAT is
-/// empty.
+/// InputError when the 2D MAT is empty.
 MedialComplex computeMAT25D(const Generators& profile, const MedialGraph& profileMAT,
   const SweepMap& sweep, const MAT25DOptions& options = {});
-
-/// The largest capSpan over the profile MAT (the half-span the method needs), and where.
-struct RequiredSpan
-{
-  double capSpan = 0.0;
-  double radius = 0.0; ///< the disk there
-  Vec2 at = Vec2::Zero();
-};
-RequiredSpan requiredHalfSpan(const MedialGraph& profileMAT, const SweepMap& sweep);
 
 /// Governor id of a profile generator (its side face, or the reflex edge of a corner).
 int governorOfGenerator(const Generators& profile, int g);

@@ -43,6 +43,8 @@ const char* toString(MedialElementType type)
       return "swept-sheet";
     case MedialElementType::ProfileSheet:
       return "profile-sheet";
+    case MedialElementType::MidSheet:
+      return "mid-sheet";
   }
   return "?";
 }

@@ -35,7 +35,8 @@ enum class MedialElementType
   SkeletalEdge = 2,  ///< a polyline
   CentreCurve = 3,   ///< a polyline of CircleCentre points
   SweptSheet = 4,    ///< triangles: a profile MAT segment swept between its seams
-  ProfileSheet = 5   ///< triangles: between a profile face and one side (or reflex edge)
+  ProfileSheet = 5,  ///< triangles: between a profile face and one side (or reflex edge)
+  MidSheet = 6       ///< triangles: between the two profile faces (spans < 2·Rmax)
 };
 
 const char* toString(MedialElementType type);
