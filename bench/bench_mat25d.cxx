@@ -126,7 +126,11 @@ int main(int argc, char* argv[])
   for (const char* name : { "rectangle", "l-shape", "ellipse", "annulus", "star", "blob", "spiral",
          "plate-with-holes", "narrow-passage" })
     objects.push_back({ name, makeShape(name).curves, false, 0.0 });
+  // Shorter than 2·Rmax: mid-sheets (beyond chapter 5).
+  objects.push_back({ "rectangle", makeShape("rectangle").curves, false, 1.5 });
+  objects.push_back({ "plate-with-holes", makeShape("plate-with-holes").curves, false, 0.6 });
   objects.push_back({ "rectangle", makeShape("rectangle").curves, true, 90.0 });
+  objects.push_back({ "rectangle", makeShape("rectangle").curves, true, 40.0 });
   objects.push_back({ "plate-with-holes", makeShape("plate-with-holes").curves, true, 120.0 });
   objects.push_back({ "circle (torus)", makeShape("circle").curves, true, 360.0 });
   objects.push_back({ "plate-with-holes", makeShape("plate-with-holes").curves, true, 360.0 });
@@ -155,7 +159,11 @@ int main(int argc, char* argv[])
       if (o.revolve)
         std::snprintf(sweep, sizeof sweep, "revolved %g°", o.span);
       else
-        std::snprintf(sweep, sizeof sweep, "extruded %s", o.span > 0 ? std::to_string(o.span).c_str() : "2.5·Rmax");
+      {
+        char length[32];
+        std::snprintf(length, sizeof length, "%g", o.span);
+        std::snprintf(sweep, sizeof sweep, "extruded %s", o.span > 0 ? length : "2.5·Rmax");
+      }
       std::printf("| %s | %s | %s | %d | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.1e | %d of %d |\n",
         o.name.c_str(), sweep, mode == 0 ? "fixed 1e-3" : "adaptive 1e-4", r.junctions, r.seams,
         r.sheets, r.points, r.triangles, r.profileMs, r.constructionMs, r.profileMs + r.constructionMs,

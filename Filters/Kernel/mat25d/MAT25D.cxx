@@ -453,17 +453,23 @@ private:
         seam.clear();
       }
     }
-    // Per side: the profile sheets below both faces, the mid-sheet and its seam.
+    // Per side: the profile sheets below both faces, the mid-sheet and its seam (the seam
+    // through every sample above the mid-surface, the sheets through the sheet columns).
     for (int side = 0; side < 2; ++side)
     {
-      std::vector<StripColumn> strip;
-      std::vector<int> midSeam;
       std::vector<int> midGovs = side == 0 ? govA : govB;
       midGovs.insert(midGovs.begin(), { E, E + 1 });
-      for (size_t i = 0; i < n; ++i)
+      std::vector<StripColumn> strip;
+      std::vector<int> midSeam;
+      for (size_t i = 0; i <= n; ++i)
       {
-        if (!sheetColumn[i] && kind[i] == Station::Below)
-          continue;
+        if (i == n || kind[i] == Station::Below)
+        {
+          addPolyline(MedialElementType::Seam, midSeam, midGovs, k);
+          midSeam.clear();
+        }
+        if (i == n)
+          break;
         const MedialSample& s = samples[i];
         StripColumn c{ s.foot[side].point, s.x, s.radius, -1 };
         if (kind[i] == Station::Above)
@@ -472,12 +478,15 @@ private:
           const Vec2 t = c.foot + c.tTop * (c.x - c.foot);
           c.top = addPoint(W.place(t, 0.5 * S), c.tTop * c.r, MedialPoint3DType::Seam, 3);
           c.midTop = mid[i];
+          midSeam.push_back(c.top);
         }
         else if (kind[i] == Station::Crossing)
         {
           c.top = c.midTop = mid[i];
+          midSeam.push_back(c.top);
         }
-        strip.push_back(c);
+        if (sheetColumn[i])
+          strip.push_back(c);
       }
       for (int face = 0; face < 2; ++face)
       {
@@ -486,7 +495,7 @@ private:
         std::vector<StripColumn> faceStrip = strip;
         for (size_t i = 0, j = 0; i < n; ++i)
         {
-          if (!sheetColumn[i] && kind[i] == Station::Below)
+          if (!sheetColumn[i])
             continue;
           if (kind[i] == Station::Below)
             faceStrip[j].top = face == 0 ? columns[i].front() : columns[i].back();
@@ -495,17 +504,6 @@ private:
         profileSheet(face, faceStrip, sg, k);
       }
       midSheet(strip, midGovs, k);
-      for (const StripColumn& c : strip)
-      {
-        if (c.midTop >= 0)
-        {
-          midSeam.push_back(c.top);
-          continue;
-        }
-        addPolyline(MedialElementType::Seam, midSeam, midGovs, k);
-        midSeam.clear();
-      }
-      addPolyline(MedialElementType::Seam, midSeam, midGovs, k);
     }
   }
 
