@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -164,9 +165,13 @@ private:
         addCurve(MedialElementType::Seam, NodeColumn[n], govs, n);
         if (!W.closed())
         {
-          addJunction(NodeColumn[n].front(), govs, E, n);
-          if (NodeColumn[n].back() != NodeColumn[n].front())
-            addJunction(NodeColumn[n].back(), govs, E + 1, n);
+          if (NodeColumn[n].back() == NodeColumn[n].front())
+            addJunction(NodeColumn[n].front(), govs, { E, E + 1 }, n); // span = 2·r: both faces
+          else
+          {
+            addJunction(NodeColumn[n].front(), govs, { E }, n);
+            addJunction(NodeColumn[n].back(), govs, { E + 1 }, n);
+          }
         }
         break;
       case MedialPointType::ConvexVertexEnd:
@@ -189,9 +194,10 @@ private:
     }
   }
 
-  void addJunction(int id, std::vector<int> govs, int face, int n)
+  /// A junction vertex; `faces` are the profile faces its ball touches.
+  void addJunction(int id, std::vector<int> govs, std::initializer_list<int> faces, int n)
   {
-    govs.insert(govs.begin(), face);
+    govs.insert(govs.begin(), faces);
     MedialElement e;
     e.type = MedialElementType::Junction;
     e.points = { id };
@@ -392,7 +398,7 @@ private:
       {
         const int id = addPoint(W.place(s.x, 0.5 * S), s.radius, MedialPoint3DType::Junction, 4);
         columns[i].assign(Across + 1, id);
-        addCrossingJunction(id, s, k);
+        addJunction(id, governors({ s.foot[0], s.foot[1] }), { E, E + 1 }, k);
       }
       else if (sheetColumn[i] || kind[i] == Station::Crossing)
         columns[i] = column(s.x, s.radius, MedialPoint3DType::Seam, 3, MedialPoint3DType::Sheet, 2);
@@ -505,18 +511,6 @@ private:
       }
       midSheet(strip, midGovs, k);
     }
-  }
-
-  void addCrossingJunction(int id, const MedialSample& s, int k)
-  {
-    std::vector<int> govs = governors({ s.foot[0], s.foot[1] });
-    govs.insert(govs.begin(), { E, E + 1 });
-    MedialElement e;
-    e.type = MedialElementType::Junction;
-    e.points = { id };
-    e.governors = std::move(govs);
-    e.profileSegment = k;
-    C.elements.push_back(std::move(e));
   }
 
   /// The point T_{S/2}(x) of a node above the mid-surface, shared by its segments.
