@@ -509,3 +509,42 @@ TEST(MAT25D, SweptSolidIsClosedWithTheRightVolume)
     EXPECT_NEAR(solid.volume(), degrees * Pi / 180.0 * 8.0 * 3.0, 1e-9 * 100.0) << degrees;
   }
 }
+
+// A profile in a tilted plane, extruded along that plane's normal and revolved about an
+// axis in it: the MAT is the box's / hollow cylinder's, moved rigidly.
+TEST(MAT25D, TiltedProfile)
+{
+  Shape rect = makeShape("rectangle");
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 0.5).normalized()).toRotationMatrix();
+  const Vec3 shift(3, -1, 2);
+  for (NurbsCurve& c : rect.curves)
+  {
+    Vec4List p = c.homogeneousPoints();
+    for (Vec4& h : p)
+      h.head<3>() = R * h.head<3>() + h.w() * shift;
+    c = NurbsCurve(c.degree(), c.knots(), p);
+  }
+  const auto box = run(rect.curves, extrusion(3.0));
+  const Vec3 n = box->profile->plane().normal; // the extrusion direction, ±R·z
+  ASSERT_NEAR(std::abs(n.dot(R * Vec3::UnitZ())), 1.0, 1e-12);
+  const std::vector<Vec3> j = junctions(box->mat);
+  ASSERT_EQ(j.size(), 4u);
+  for (const double x : { -1.0, 1.0 })
+    for (const double z : { 1.0, 2.0 })
+      EXPECT_TRUE(contains(j, R * Vec3(x, 0, 0) + shift + z * n, 1e-12)) << x << " " << z;
+  expectVerified(*box, "tilted box", 3);
+
+  // Revolved about the (moved) line x = −3 of the profile plane by 90°.
+  const auto ring = run(rect.curves, revolution(90.0, R * Vec3(-3, 0, 0) + shift, R * Vec3::UnitY()));
+  EXPECT_EQ(junctions(ring->mat).size(), 4u);
+  for (const Vec3& p : junctions(ring->mat))
+  {
+    // Distance to the axis is 2 or 4 (the branch points), and the ball radius is 1.
+    const Vec3 rel = p - (R * Vec3(-3, 0, 0) + shift);
+    const double axial = rel.dot(R * Vec3::UnitY());
+    const double rho = (rel - axial * (R * Vec3::UnitY())).norm();
+    EXPECT_TRUE(std::abs(rho - 2.0) < 1e-12 || std::abs(rho - 4.0) < 1e-12) << rho;
+    EXPECT_NEAR(axial, 0.0, 1e-12);
+  }
+  expectVerified(*ring, "tilted ring", 3);
+}
