@@ -118,6 +118,29 @@ TEST(MAT25D, BoxJunctionsAndSeams)
   EXPECT_GT(verifyMAT25D(*r->boundary, r->mat, 7).contactsChecked, 10);
 }
 
+// Sheets built strip by strip share their border vertices after the weld: no two output
+// points coincide, and every triangle edge of the profile sheets over one side's strip
+// interior is shared by two triangles of the complex.
+TEST(MAT25D, OutputPointsAreDistinct)
+{
+  for (const auto& r : { run(makeShape("rectangle").curves, extrusion(3.0)),
+         run(makeShape("plate-with-holes").curves, extrusion(0.6), MAT25DOptions{ 0.05, {} }),
+         run(makeShape("l-shape").curves, revolution(360.0, Vec3(-1, 0, 0))) })
+  {
+    const std::vector<MedialPoint3D>& p = r->mat.points;
+    const double tol = 1e-10 * r->boundary->size();
+    std::vector<int> order(p.size());
+    for (size_t i = 0; i < p.size(); ++i)
+      order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return p[a].x.x() < p[b].x.x(); });
+    int duplicates = 0;
+    for (size_t i = 0; i < order.size(); ++i)
+      for (size_t j = i + 1; j < order.size() && p[order[j]].x.x() - p[order[i]].x.x() <= tol; ++j)
+        duplicates += (p[order[i]].x - p[order[j]].x).norm() <= tol;
+    EXPECT_EQ(duplicates, 0) << r->sweep->describe();
+  }
+}
+
 namespace
 {
 // Brute-force junction search on the exact swept solid, independent of the 2D MAT: a grid

@@ -60,6 +60,9 @@ public:
       if (O.progress)
         O.progress(static_cast<double>(k + 1) / static_cast<double>(total));
     }
+    // Sheets built strip by strip meet along footpoint normals and at nodes: one vertex
+    // there, so the output is a connected complex.
+    C.weld(1e-12 * Size);
     return std::move(C);
   }
 

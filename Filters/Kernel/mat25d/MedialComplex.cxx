@@ -1,6 +1,8 @@
 #include "MedialComplex.h"
 
 #include <algorithm>
+#include <cmath>
+#include <unordered_map>
 
 namespace exactmat
 {
@@ -47,6 +49,128 @@ const char* toString(MedialElementType type)
       return "mid-sheet";
   }
   return "?";
+}
+
+namespace
+{
+int priority(MedialPoint3DType t)
+{
+  switch (t)
+  {
+    case MedialPoint3DType::Junction:
+      return 6;
+    case MedialPoint3DType::SeamEnd:
+      return 5;
+    case MedialPoint3DType::Seam:
+      return 4;
+    case MedialPoint3DType::SkeletalEdge:
+      return 3;
+    case MedialPoint3DType::CircleCentre:
+      return 2;
+    case MedialPoint3DType::ConvexEdge:
+      return 1;
+    case MedialPoint3DType::Sheet:
+      return 0;
+  }
+  return 0;
+}
+} // namespace
+
+int MedialComplex::weld(double tolerance)
+{
+  // Twins come out of the same formulas and differ by rounding: hash the points on a grid
+  // a million times coarser than the tolerance and compare within their cell, and within
+  // the neighbouring cell along an axis where a point lies within the tolerance of the
+  // border (points at coordinate 0 do, on every profile face).
+  const double cell = 1e6 * tolerance;
+  using Key = std::array<long long, 3>;
+  struct KeyHash
+  {
+    size_t operator()(const Key& k) const
+    {
+      return static_cast<size_t>(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL);
+    }
+  };
+  std::unordered_map<Key, int, KeyHash> first; // cell → first kept point in it
+  first.reserve(points.size());
+  std::vector<int> next; // kept point → the next kept point in its cell
+  std::vector<int> target(points.size());
+  std::vector<MedialPoint3D> kept;
+  kept.reserve(points.size());
+  int merged = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    const MedialPoint3D& p = points[i];
+    Key k;
+    int options[3][2];
+    int count[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double u = p.x[a] / cell, f = std::floor(u);
+      k[a] = static_cast<long long>(f);
+      count[a] = 1;
+      options[a][0] = 0;
+      if (u - f < 1e-5)
+        options[a][count[a]++] = -1;
+      else if (u - f > 1.0 - 1e-5)
+        options[a][count[a]++] = 1;
+    }
+    int twin = -1;
+    for (int a = 0; a < count[0] && twin < 0; ++a)
+      for (int b = 0; b < count[1] && twin < 0; ++b)
+        for (int c = 0; c < count[2] && twin < 0; ++c)
+        {
+          auto it = first.find({ k[0] + options[0][a], k[1] + options[1][b], k[2] + options[2][c] });
+          for (int j = it == first.end() ? -1 : it->second; j >= 0 && twin < 0; j = next[j])
+            if ((kept[j].x - p.x).norm() <= tolerance && std::abs(kept[j].radius - p.radius) <= tolerance)
+              twin = j;
+        }
+    if (twin < 0)
+    {
+      const int id = static_cast<int>(kept.size());
+      auto [it, inserted] = first.try_emplace(k, id);
+      if (!inserted)
+      {
+        int last = it->second;
+        while (next[last] >= 0)
+          last = next[last];
+        next[last] = id;
+      }
+      target[i] = id;
+      kept.push_back(p);
+      next.push_back(-1);
+      continue;
+    }
+    target[i] = twin;
+    ++merged;
+    if (priority(p.type) > priority(kept[twin].type))
+    {
+      kept[twin].type = p.type;
+      kept[twin].contacts = p.contacts;
+    }
+  }
+  if (merged == 0)
+    return 0;
+  points = std::move(kept);
+  for (MedialElement& e : elements)
+  {
+    for (int& id : e.points)
+      id = target[id];
+    const bool closed = e.points.size() > 2 && e.points.front() == e.points.back();
+    e.points.erase(std::unique(e.points.begin(), e.points.end()), e.points.end());
+    if (closed && e.points.size() > 1 && e.points.front() != e.points.back())
+      e.points.push_back(e.points.front());
+    size_t out = 0;
+    for (std::array<int, 3> t : e.triangles)
+    {
+      for (int& id : t)
+        id = target[id];
+      if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+        e.triangles[out++] = t;
+    }
+    e.triangles.resize(out);
+  }
+  return merged;
 }
 
 int MedialComplex::count(MedialElementType type) const

@@ -66,6 +66,12 @@ struct MedialComplex
   std::vector<MedialPoint3D> points;
   std::vector<MedialElement> elements;
 
+  /// Makes points that coincide (within `tolerance`) one, keeping the most special type
+  /// (junction > seam end > seam > skeletal edge > circle centre > convex edge > sheet):
+  /// neighbouring sheets built apart then share their border vertices. Drops triangles
+  /// and repeated polyline points that collapse. Returns how many points were merged.
+  int weld(double tolerance);
+
   int count(MedialElementType type) const;
   int countPoints(MedialPoint3DType type) const;
   int triangleCount() const;
