@@ -47,26 +47,12 @@ struct Object
 // parallel to y one unit left of the profile.
 Sweep sweepFor(const Object& o, const Boundary2D& b, const MedialGraph& g)
 {
-  Sweep s;
   if (!o.revolve)
-  {
-    double rmax = 0.0;
-    for (const MedialSegment& seg : g.segments)
-      for (const MedialSample& m : seg.samples)
-        rmax = std::max(rmax, m.radius);
-    for (const MedialNode& n : g.nodes)
-      rmax = std::max(rmax, n.sample.radius);
-    s.kind = SweepKind::Extrusion;
-    s.length = o.span > 0 ? o.span : 2.5 * rmax;
-    return s;
-  }
+    return Sweep::extrusion(o.span > 0 ? o.span : 2.5 * g.maximumRadius());
   double xmin = 1e300;
   for (const Edge2D& e : b.edges())
     xmin = std::min(xmin, e.curve.boundingBox().min().x());
-  s.kind = SweepKind::Revolution;
-  s.angle = o.span * Pi / 180.0;
-  s.axisPoint = Vec3(xmin - 1.0, 0, 0);
-  return s;
+  return Sweep::revolution(o.span, Vec3(xmin - 1.0, 0, 0));
 }
 
 Result measure(const Object& o, const MAT2DOptions& options, int repeats, bool verify)

@@ -161,14 +161,10 @@ int vtkMAT25DFilter::RequestData(
     }
     const exactmat::Boundary2D profile =
       exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(input));
-    exactmat::Sweep sweep;
-    sweep.kind = this->SweepType == Revolution ? exactmat::SweepKind::Revolution
-                                                : exactmat::SweepKind::Extrusion;
-    sweep.length = this->Length;
-    sweep.angle = this->Angle * exactmat::Pi / 180.0;
-    sweep.axisPoint = exactmat::Vec3(this->AxisOrigin[0], this->AxisOrigin[1], this->AxisOrigin[2]);
-    sweep.axisDirection =
-      exactmat::Vec3(this->AxisDirection[0], this->AxisDirection[1], this->AxisDirection[2]);
+    const exactmat::Sweep sweep = this->SweepType == Revolution
+      ? exactmat::Sweep::revolution(this->Angle, exactmat::Vec3(this->AxisOrigin),
+          exactmat::Vec3(this->AxisDirection))
+      : exactmat::Sweep::extrusion(this->Length);
     const exactmat::SweepMap map(profile, sweep); // checks the sweep before any work
 
     auto t0 = std::chrono::steady_clock::now();

@@ -191,15 +191,10 @@ int vtkNURBSSource::RequestData(
         exactmat::fail("sweep: '", shape.name, "' is a solid; only 2D shapes (profiles) are "
           "extruded or revolved");
       }
-      exactmat::Sweep sweep;
-      sweep.kind = this->Sweep == SweepRevolution ? exactmat::SweepKind::Revolution
-                                             : exactmat::SweepKind::Extrusion;
-      sweep.length = this->Length;
-      sweep.angle = this->SweepAngle * exactmat::Pi / 180.0;
-      sweep.axisPoint = exactmat::Vec3(
-        this->SweepAxisOrigin[0], this->SweepAxisOrigin[1], this->SweepAxisOrigin[2]);
-      sweep.axisDirection = exactmat::Vec3(
-        this->SweepAxisDirection[0], this->SweepAxisDirection[1], this->SweepAxisDirection[2]);
+      const exactmat::Sweep sweep = this->Sweep == SweepRevolution
+        ? exactmat::Sweep::revolution(this->SweepAngle, exactmat::Vec3(this->SweepAxisOrigin),
+            exactmat::Vec3(this->SweepAxisDirection))
+        : exactmat::Sweep::extrusion(this->Length);
       output->ShallowCopy(
         sweptSolid(shape, sweep, [this](double f) { this->UpdateProgress(0.2 + 0.7 * f); }));
       return 1;

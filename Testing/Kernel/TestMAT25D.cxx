@@ -44,21 +44,13 @@ std::unique_ptr<SweptMAT> run(
 
 Sweep extrusion(double length)
 {
-  Sweep s;
-  s.kind = SweepKind::Extrusion;
-  s.length = length;
-  return s;
+  return Sweep::extrusion(length);
 }
 
 Sweep revolution(double degrees, const Vec3& axisPoint = Vec3::Zero(),
   const Vec3& axisDirection = Vec3::UnitY())
 {
-  Sweep s;
-  s.kind = SweepKind::Revolution;
-  s.angle = degrees * Pi / 180.0;
-  s.axisPoint = axisPoint;
-  s.axisDirection = axisDirection;
-  return s;
+  return Sweep::revolution(degrees, axisPoint, axisDirection);
 }
 
 void expectVerified(const SweptMAT& r, const std::string& what, int stride = 1)
@@ -476,13 +468,7 @@ TEST_P(EveryProfile, ExtrudedAndRevolvedAreVerified)
     box.extend(e.curve.boundingBox());
   const Generators g(profile);
   const MedialGraph graph = computeMAT2D(g);
-  double rmax = 0.0;
-  for (const MedialNode& n : graph.nodes)
-    rmax = std::max(rmax, n.sample.radius);
-  for (const MedialSegment& s : graph.segments)
-    for (const MedialSample& m : s.samples)
-      rmax = std::max(rmax, m.radius);
-  const Sweep sweeps[] = { extrusion(2.5 * rmax),
+  const Sweep sweeps[] = { extrusion(2.5 * graph.maximumRadius()),
     revolution(120.0, Vec3(box.min().x() - 1.0, 0, 0)),
     revolution(360.0, Vec3(box.min().x() - 0.5, 0, 0), Vec3(0, -1, 0)) };
   for (const Sweep& sweep : sweeps)

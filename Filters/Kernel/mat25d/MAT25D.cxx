@@ -84,13 +84,7 @@ private:
     Across = std::clamp(static_cast<int>(std::ceil(sweepLength / h)), 4, 4096);
     if (W.closed())
       Across = std::max(Across, 24);
-    double rmax = 0.0;
-    for (const MedialNode& n : M.nodes)
-      rmax = std::max(rmax, n.sample.radius);
-    for (const MedialSegment& s : M.segments)
-      for (const MedialSample& x : s.samples)
-        rmax = std::max(rmax, x.radius);
-    Levels = std::clamp(static_cast<int>(std::ceil(rmax / h)), 2, 1024);
+    Levels = std::clamp(static_cast<int>(std::ceil(M.maximumRadius() / h)), 2, 1024);
   }
 
   int addPoint(const Vec3& x, double r, MedialPoint3DType type, int contacts)
@@ -259,8 +253,8 @@ private:
   }
 
   /// The MAT point between samples p (below) and q (above) whose ball touches both profile
-  /// faces: on the pair's bisector with r = midRadius(x) (Bisector::correct at fixed r
-  /// inside a bracketed secant on r). Falls back to interpolation if Newton fails.
+  /// faces: on the pair's bisector with r = midRadius(x) (Bisector::correct inside a
+  /// bracketed secant from p to q); an InputError when no generator pair solves it.
   MedialSample crossing(const MedialSample& p, const MedialSample& q) const
   {
     // The generators may change between the samples (a front passing a smooth vertex or
@@ -268,59 +262,71 @@ private:
     MedialSample c;
     if (crossingOnPair(p, q, p, c) || crossingOnPair(p, q, q, c))
       return c;
-    const double flo = p.radius - midRadius(p.x), fhi = q.radius - midRadius(q.x);
-    const double w = flo / (flo - fhi);
-    c.x = p.x + w * (q.x - p.x);
-    c.radius = p.radius + w * (q.radius - p.radius);
-    c.foot[0] = p.foot[0];
-    c.foot[1] = p.foot[1];
-    return c; // not exact: verification would show it
+    // No silent approximation: a junction that cannot be solved exactly is an error.
+    fail("2.5D MAT: the junction where the profile's MAT crosses the mid-surface between ",
+      "the profile faces (between MAT points ", format(Vec3(p.x.x(), p.x.y(), 0.0)), " and ",
+      format(Vec3(q.x.x(), q.x.y(), 0.0)), ", generators ", p.foot[0].g, " and ", p.foot[1].g,
+      ") could not be solved; a slightly different span avoids it");
   }
 
   bool crossingOnPair(
     const MedialSample& p, const MedialSample& q, const MedialSample& pair, MedialSample& c) const
+  {
+    // A secant on w ∈ [0,1] from p to q: the unknowns are interpolated, then corrected onto
+    // the bisector with one of them held; which one may be held depends on the segment (r
+    // is constant between parallel edges, a footpoint can rest on a corner), so each is
+    // tried in turn.
+    for (int fixed = 0; fixed < 3; ++fixed)
+      if (crossingOnPair(p, q, pair, fixed, c))
+        return true;
+    return false;
+  }
+
+  bool crossingOnPair(const MedialSample& p, const MedialSample& q, const MedialSample& pair,
+    int fixed, MedialSample& c) const
   {
     const int ga = pair.foot[0].g, gb = pair.foot[1].g;
     const Bisector bisector(G, ga, gb);
     auto start = [&](const MedialSample& m, int k) {
       return m.foot[k].g == pair.foot[k].g ? m.foot[k].s : pair.foot[k].s;
     };
-    auto solve = [&](double r, BisectorState& y) {
-      const double w = (r - p.radius) / (q.radius - p.radius);
-      y = { start(p, 0) + w * (start(q, 0) - start(p, 0)), start(p, 1) + w * (start(q, 1) - start(p, 1)), r };
-      if (!bisector.correct(y, 2, 1e-15 * Size))
+    auto solve = [&](double w, BisectorState& y) {
+      y = { start(p, 0) + w * (start(q, 0) - start(p, 0)), start(p, 1) + w * (start(q, 1) - start(p, 1)),
+        p.radius + w * (q.radius - p.radius) };
+      if (!bisector.correct(y, fixed, 1e-15 * Size))
         return std::numeric_limits<double>::quiet_NaN();
-      return r - midRadius(bisector.point(y));
+      return y.r - midRadius(bisector.point(y));
     };
-    double lo = p.radius, hi = q.radius;
+    double lo = 0.0, hi = 1.0;
     double flo = p.radius - midRadius(p.x), fhi = q.radius - midRadius(q.x);
     BisectorState y;
     bool converged = false;
     for (int it = 0; it < 100 && !converged; ++it)
     {
-      double r = (fhi != flo) ? lo - flo * (hi - lo) / (fhi - flo) : 0.5 * (lo + hi);
-      if (!(r > std::min(lo, hi) && r < std::max(lo, hi)))
-        r = 0.5 * (lo + hi);
-      const double f = solve(r, y);
+      double w = (fhi != flo) ? lo - flo * (hi - lo) / (fhi - flo) : 0.5 * (lo + hi);
+      if (!(w > lo && w < hi))
+        w = 0.5 * (lo + hi);
+      const double f = solve(w, y);
       if (std::isnan(f))
         return false;
-      converged = std::abs(f) <= 1e-14 * Size || std::abs(hi - lo) <= 1e-15 * Size;
+      converged = std::abs(f) <= 1e-14 * Size || hi - lo <= 1e-15;
       if ((f < 0.0) == (flo < 0.0))
       {
-        lo = r;
+        lo = w;
         flo = f;
         fhi *= 0.5; // Illinois: keep the stale end from stalling the secant
       }
       else
       {
-        hi = r;
+        hi = w;
         fhi = f;
         flo *= 0.5;
       }
     }
     // A solution past a generator's end belongs to the other pair (the curve beyond its
     // end is not the boundary).
-    if (!converged || y.sa < 0.0 || y.sa > 1.0 || y.sb < 0.0 || y.sb > 1.0)
+    if (!converged || y.sa < 0.0 || y.sa > 1.0 || y.sb < 0.0 || y.sb > 1.0 ||
+      std::abs(y.r - midRadius(bisector.point(y))) > 1e-12 * Size)
       return false;
     c.x = bisector.point(y);
     c.radius = y.r;

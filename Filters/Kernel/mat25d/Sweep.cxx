@@ -52,6 +52,24 @@ void arcNet(const Vec4& h, const Vec3& a, const Vec3& d, const Vec3& m, const Ve
 }
 } // namespace
 
+Sweep Sweep::extrusion(double length)
+{
+  Sweep s;
+  s.kind = SweepKind::Extrusion;
+  s.length = length;
+  return s;
+}
+
+Sweep Sweep::revolution(double degrees, const Vec3& point, const Vec3& direction)
+{
+  Sweep s;
+  s.kind = SweepKind::Revolution;
+  s.angle = degrees * Pi / 180.0;
+  s.axisPoint = point;
+  s.axisDirection = direction;
+  return s;
+}
+
 const char* toString(SweepKind kind)
 {
   return kind == SweepKind::Extrusion ? "extrusion" : "revolution";
@@ -165,36 +183,34 @@ std::vector<PatchPiece> SweepMap::sideFaces(const std::vector<std::vector<double
 void SweepMap::appendSides(const Edge2D& e, const BezierCurve& piece, std::vector<PatchPiece>& faces) const
 {
   const Plane& pl = plane();
+  Vec4List world;
+  for (const Vec4& h : piece.homogeneousPoints())
+    world.push_back(pl.toWorldHomogeneous(h));
+  const int p = static_cast<int>(world.size()) - 1;
+  if (S.kind == SweepKind::Extrusion)
   {
-    Vec4List world;
-    for (const Vec4& h : piece.homogeneousPoints())
-      world.push_back(pl.toWorldHomogeneous(h));
-    const int p = static_cast<int>(world.size()) - 1;
-    if (S.kind == SweepKind::Extrusion)
+    Vec4List net;
+    for (const Vec4& h : world)
     {
-      Vec4List net;
-      for (const Vec4& h : world)
-      {
-        net.push_back(h);
-        const Vec3 moved = h.head<3>() + h.w() * S.length * pl.normal;
-        net.push_back(Vec4(moved.x(), moved.y(), moved.z(), h.w()));
-      }
-      faces.push_back({ BezierPatch(p, 1, net), std::nullopt, e.entity });
-      return;
+      net.push_back(h);
+      const Vec3 moved = h.head<3>() + h.w() * S.length * pl.normal;
+      net.push_back(Vec4(moved.x(), moved.y(), moved.z(), h.w()));
     }
-    const int spans = std::max(1, static_cast<int>(std::ceil(Span / (0.5 * Pi) - 1e-9)));
-    for (int k = 0; k < spans; ++k)
+    faces.push_back({ BezierPatch(p, 1, net), std::nullopt, e.entity });
+    return;
+  }
+  const int spans = std::max(1, static_cast<int>(std::ceil(Span / (0.5 * Pi) - 1e-9)));
+  for (int k = 0; k < spans; ++k)
+  {
+    const double t0 = Span * k / spans, t1 = Span * (k + 1) / spans;
+    Vec4List net;
+    for (const Vec4& h : world)
     {
-      const double t0 = Span * k / spans, t1 = Span * (k + 1) / spans;
-      Vec4List net;
-      for (const Vec4& h : world)
-      {
-        Vec4 arc[3];
-        arcNet(h, Aw, Dw, Mw, Nw, t0, t1, arc);
-        net.insert(net.end(), arc, arc + 3);
-      }
-      faces.push_back({ BezierPatch(p, 2, net), std::nullopt, e.entity });
+      Vec4 arc[3];
+      arcNet(h, Aw, Dw, Mw, Nw, t0, t1, arc);
+      net.insert(net.end(), arc, arc + 3);
     }
+    faces.push_back({ BezierPatch(p, 2, net), std::nullopt, e.entity });
   }
 }
 

@@ -37,6 +37,11 @@ struct Sweep
   double angle = 6.283185307179586; ///< revolution, radians in (0, 2π]
   Vec3 axisPoint = Vec3::Zero();   ///< revolution axis, in the profile's plane
   Vec3 axisDirection = Vec3::UnitY();
+
+  static Sweep extrusion(double length);
+  /// `degrees` in (0, 360]; the axis through `point` along `direction`.
+  static Sweep revolution(double degrees, const Vec3& point = Vec3::Zero(),
+    const Vec3& direction = Vec3::UnitY());
 };
 
 /// A sweep bound to a profile: validated, in the profile's frame.

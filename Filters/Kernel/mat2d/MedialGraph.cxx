@@ -120,6 +120,17 @@ int MedialGraph::cycleCount() const
   return static_cast<int>(segments.size()) - static_cast<int>(nodes.size()) + components;
 }
 
+double MedialGraph::maximumRadius() const
+{
+  double r = 0.0;
+  for (const MedialNode& n : nodes)
+    r = std::max(r, n.sample.radius);
+  for (const MedialSegment& s : segments)
+    for (const MedialSample& m : s.samples)
+      r = std::max(r, m.radius);
+  return r;
+}
+
 int MedialGraph::pointCount() const
 {
   int n = static_cast<int>(nodes.size());

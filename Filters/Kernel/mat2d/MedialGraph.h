@@ -56,6 +56,8 @@ struct MedialGraph
   void mergeJoints();
 
   int count(MedialPointType type) const;
+  /// The largest radius over nodes and samples (Rmax).
+  double maximumRadius() const;
   /// Independent cycles: segments − nodes + connected components.
   int cycleCount() const;
   int pointCount() const;
