@@ -31,6 +31,11 @@
  * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
  * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.
  * "start,2,5"; "start"/"end" = the profile faces, "v<vertex>" = a reflex edge).
+ *
+ * Verification (field data of every MAT output, when VerifyOutput is on):
+ * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
+ * `MaximumVerifiedError` (double: largest |distance to the exact boundary − Radius| / size),
+ * `VerificationReport` (string: what failed and where, empty when passed).
  */
 
 namespace exactmat
@@ -54,6 +59,9 @@ constexpr const char* Touchpoints = "Touchpoints";
 constexpr const char* ElementType = "ElementType";
 constexpr const char* ElementId = "ElementId";
 constexpr const char* Governors = "Governors";
+constexpr const char* VerificationStatus = "VerificationStatus";
+constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
+constexpr const char* VerificationReport = "VerificationReport";
 } // namespace arrays
 } // namespace exactmat
 

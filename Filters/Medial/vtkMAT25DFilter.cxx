@@ -2,7 +2,9 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATVerificationReport.h"
 
+#include "brep/NormalisePieces.h"
 #include "common/InputError.h"
 #include "mat25d/MAT25D.h"
 #include "mat25d/Verification.h"
@@ -22,6 +24,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <chrono>
+#include <limits>
 #include <string>
 
 vtkStandardNewMacro(vtkMAT25DFilter);
@@ -65,7 +68,8 @@ std::string governorNames(const Boundary2D& profile, const std::vector<int>& gov
   return out;
 }
 
-void writeComplex(const MedialComplex& mat, const Boundary2D& profile, vtkPolyData* out)
+void writeComplex(const MedialComplex& mat, const Boundary2D& profile, const Normalisation& frame,
+  vtkPolyData* out)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -81,8 +85,8 @@ void writeComplex(const MedialComplex& mat, const Boundary2D& profile, vtkPolyDa
   for (size_t i = 0; i < mat.points.size(); ++i)
   {
     const MedialPoint3D& p = mat.points[i];
-    points->SetPoint(static_cast<vtkIdType>(i), p.x.data());
-    radius->SetValue(static_cast<vtkIdType>(i), p.radius);
+    points->SetPoint(static_cast<vtkIdType>(i), frame.toUser(p.x).data());
+    radius->SetValue(static_cast<vtkIdType>(i), frame.lengthToUser(p.radius));
     type->SetValue(static_cast<vtkIdType>(i), static_cast<int>(p.type));
     touchpoints->SetValue(static_cast<vtkIdType>(i), p.contacts);
   }
@@ -152,19 +156,30 @@ int vtkMAT25DFilter::RequestData(
   this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSkeletalEdges = 0;
   this->NumberOfSheets = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
   this->MaximumVerifiedError = this->ProfileSeconds = this->ConstructionSeconds = 0.0;
+  this->VerificationPassed = true;
   try
   {
+    exactmat::checkParameter("Length", this->Length, 0.0, std::numeric_limits<double>::max());
+    exactmat::checkParameter("Angle", this->Angle, 0.0, 360.0);
+    exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
+    exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
+    exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
+    exactmat::checkParameter("SheetResolution", this->SheetResolution, 1e-4, 0.5);
+    exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
     if (exactmat::gridHasSurfaceCells(input))
     {
       exactmat::fail("the input holds surface cells: vtkMAT25DFilter takes the profile "
                      "curves of the solid (use vtkMAT3DFilter for solids given by surfaces)");
     }
+    // The whole computation runs in the profile's unit frame (the sweep moved and scaled
+    // with it); writeComplex maps back.
     const exactmat::Boundary2D profile =
-      exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(input));
+      exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
+    const exactmat::Normalisation& frame = profile.userFrame();
     const exactmat::Sweep sweep = this->SweepType == Revolution
-      ? exactmat::Sweep::revolution(this->Angle, exactmat::Vec3(this->AxisOrigin),
+      ? exactmat::Sweep::revolution(this->Angle, frame.toUnit(exactmat::Vec3(this->AxisOrigin)),
           exactmat::Vec3(this->AxisDirection))
-      : exactmat::Sweep::extrusion(this->Length);
+      : exactmat::Sweep::extrusion(frame.lengthToUnit(this->Length));
     const exactmat::SweepMap map(profile, sweep); // checks the sweep before any work
 
     auto t0 = std::chrono::steady_clock::now();
@@ -184,13 +199,14 @@ int vtkMAT25DFilter::RequestData(
     options3.progress = [this](double f) { this->UpdateProgress(0.5 + 0.3 * f); };
     const exactmat::MedialComplex mat = exactmat::computeMAT25D(generators, graph, map, options3);
     this->ConstructionSeconds = secondsSince(t0);
-    writeComplex(mat, profile, output);
+    writeComplex(mat, profile, frame, output);
 
     using ET = exactmat::MedialElementType;
     this->NumberOfJunctions = mat.count(ET::Junction);
     this->NumberOfSeams = mat.count(ET::Seam);
     this->NumberOfSkeletalEdges = mat.count(ET::SkeletalEdge);
     this->NumberOfSheets = mat.count(ET::SweptSheet) + mat.count(ET::ProfileSheet);
+    exactmat::VerificationOutcome outcome;
     if (this->VerifyOutput)
     {
       const int sheetPoints = mat.countPoints(exactmat::MedialPoint3DType::Sheet) +
@@ -204,7 +220,17 @@ int vtkMAT25DFilter::RequestData(
       this->NumberOfVerifiedPoints = v.points;
       this->MaximumVerifiedError = v.maxDistanceError;
       this->NumberOfTouchpointMismatches = v.contactMismatches;
+      outcome.run = true;
+      outcome.maximumError = v.maxDistanceError;
+      outcome.passed = this->VerificationPassed = v.ok(this->VerificationTolerance);
+      if (!outcome.passed)
+      {
+        outcome.report = v.problems(this->VerificationTolerance, mat,
+          [&frame](const exactmat::Vec3& x) { return frame.toUser(x); });
+        vtkWarningMacro(<< "verification failed: " << outcome.report);
+      }
     }
+    exactmat::attachVerification(output, outcome);
     this->UpdateProgress(1.0);
   }
   catch (const exactmat::InputError& e)
@@ -233,5 +259,7 @@ void vtkMAT25DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SheetResolution: " << this->SheetResolution << "\n";
   os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
+  os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
   os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
+  os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

@@ -116,6 +116,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The verification's bound on |distance to the exact boundary − Radius| / size (default
+   * 1e-9); every checked point must also have the number of touchpoints `Touchpoints`
+   * says. When a check fails the filter warns (vtkWarningMacro, naming the worst point),
+   * VerificationPassed is false and the output's field data say so
+   * (`VerificationStatus` 0, `VerificationReport`); the output is still produced.
+   */
+  vtkSetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationPassed, bool);
+  ///@}
+
+  ///@{
   /// Results of the last run: counts, the largest |distance to the boundary − Radius| over
   /// the verified points divided by the solid's size, how many verified points have
   /// another number of touchpoints than `Touchpoints` says, and the seconds spent on the
@@ -150,6 +163,8 @@ protected:
   double SheetResolution = 0.02;
   bool VerifyOutput = true;
   int MaximumSheetPointsVerified = 500;
+  double VerificationTolerance = 1e-9;
+  bool VerificationPassed = true;
 
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;

@@ -2,7 +2,10 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATVerificationReport.h"
 
+#include "brep/NormalisePieces.h"
+#include "common/Format.h"
 #include "common/InputError.h"
 #include "mat2d/Tracer.h"
 #include "mat2d/Verification.h"
@@ -20,6 +23,7 @@
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <chrono>
 #include <string>
 
 vtkStandardNewMacro(vtkMAT2DFilter);
@@ -41,9 +45,9 @@ using namespace exactmat;
 class GraphWriter
 {
 public:
-  GraphWriter(const Generators& g, const Plane& plane)
+  GraphWriter(const Generators& g, const Boundary2D& boundary)
     : G(g)
-    , ThePlane(plane)
+    , B(boundary)
   {
     Points->SetDataTypeToDouble();
     Radius->SetName(arrays::Radius);
@@ -102,15 +106,16 @@ public:
 private:
   vtkIdType addPoint(const MedialSample& m, int type)
   {
-    const Vec3 x = ThePlane.toWorld(Vec3(m.x.x(), m.x.y(), 0.0));
-    const Vec3 f0 = ThePlane.toWorld(Vec3(m.foot[0].point.x(), m.foot[0].point.y(), 0.0));
-    const Vec3 f1 = ThePlane.toWorld(Vec3(m.foot[1].point.x(), m.foot[1].point.y(), 0.0));
-    Radius->InsertNextValue(m.radius);
+    const Vec3 x = toUser(m.x);
+    const Vec3 f0 = toUser(m.foot[0].point);
+    const Vec3 f1 = toUser(m.foot[1].point);
+    Radius->InsertNextValue(B.userLength(m.radius));
     Type->InsertNextValue(type);
     Foot0->InsertNextTuple(f0.data());
     Foot1->InsertNextTuple(f1.data());
     return Points->InsertNextPoint(x.data());
   }
+  Vec3 toUser(const Vec2& x) const { return B.userPoint(x); }
   int entity(int g) const
   {
     return (g >= 0 && G[g].kind == GeneratorKind::Edge) ? G[g].entity : -1;
@@ -124,7 +129,7 @@ private:
   }
 
   const Generators& G;
-  const Plane& ThePlane;
+  const Boundary2D& B;
   vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Verts, Lines;
   vtkNew<vtkDoubleArray> Radius, Foot0, Foot1;
@@ -140,15 +145,26 @@ int vtkMAT2DFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfSegments = this->NumberOfBranchPoints = this->NumberOfEndPoints = 0;
   this->MaximumVerifiedError = 0.0;
+  this->VerificationPassed = true;
+  this->TracingSeconds = this->VerificationSeconds = 0.0;
+  auto t0 = std::chrono::steady_clock::now();
+  auto secondsSince = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   try
   {
+    exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
+    exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
+    exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
+    exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
     if (exactmat::gridHasSurfaceCells(input))
     {
       exactmat::fail("the input holds surface cells: vtkMAT2DFilter takes the boundary "
                      "curves of a planar domain (use vtkMAT3DFilter for solids)");
     }
+    // The whole computation runs in the unit frame; GraphWriter maps back.
     const exactmat::Boundary2D boundary =
-      exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(input));
+      exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
     const exactmat::Generators generators(boundary);
     exactmat::MAT2DOptions options;
     options.tolerance = this->Tolerance;
@@ -157,16 +173,31 @@ int vtkMAT2DFilter::RequestData(
     options.branchCheckStep = this->BranchCheckStep;
     options.progress = [this](double f) { this->UpdateProgress(0.9 * f); };
     const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
-    GraphWriter(generators, boundary.plane()).write(graph, output);
+    GraphWriter(generators, boundary).write(graph, output);
+    this->TracingSeconds = secondsSince(t0);
+    t0 = std::chrono::steady_clock::now();
     this->NumberOfSegments = static_cast<int>(graph.segments.size());
     this->NumberOfBranchPoints = graph.count(exactmat::MedialPointType::Branch);
     this->NumberOfEndPoints = graph.count(exactmat::MedialPointType::ConvexVertexEnd) +
       graph.count(exactmat::MedialPointType::CurvatureCentreEnd) +
       graph.count(exactmat::MedialPointType::CircleCentre);
+    exactmat::VerificationOutcome outcome;
     if (this->VerifyOutput)
     {
-      this->MaximumVerifiedError = exactmat::verifyMAT2D(generators, graph).maxDistanceError;
+      const exactmat::MAT2DVerification v = exactmat::verifyMAT2D(generators, graph);
+      outcome.run = true;
+      outcome.maximumError = this->MaximumVerifiedError = v.maxDistanceError;
+      outcome.passed = this->VerificationPassed = v.ok(this->VerificationTolerance);
+      if (!outcome.passed)
+      {
+        outcome.report = v.problems(this->VerificationTolerance) + " (largest error at " +
+          exactmat::format(boundary.userPoint(v.worstPoint)) + ", Radius " +
+          exactmat::format(boundary.userLength(v.worstRadius)) + ")";
+        vtkWarningMacro(<< "verification failed: " << outcome.report);
+      }
     }
+    exactmat::attachVerification(output, outcome);
+    this->VerificationSeconds = secondsSince(t0);
     this->UpdateProgress(1.0);
   }
   catch (const exactmat::InputError& e)
@@ -187,5 +218,7 @@ void vtkMAT2DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
   os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
   os << indent << "NumberOfBranchPoints: " << this->NumberOfBranchPoints << "\n";
+  os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
   os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
+  os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

@@ -69,9 +69,26 @@ public:
   vtkGetMacro(NumberOfBranchPoints, int);
   vtkGetMacro(NumberOfEndPoints, int);
   vtkGetMacro(MaximumVerifiedError, double);
+  /// Seconds spent on tracing (boundary set-up included) and on the verification.
+  vtkGetMacro(TracingSeconds, double);
+  vtkGetMacro(VerificationSeconds, double);
   vtkSetMacro(VerifyOutput, bool);
   vtkGetMacro(VerifyOutput, bool);
   vtkBooleanMacro(VerifyOutput, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The self-verification's bound on |distance to the exact boundary − Radius| / size
+   * (default 1e-9). The run also checks footpoint counts, that the footpoints sweep the
+   * boundary once, one connected component per connected domain and cycles = holes.
+   * When a check fails the filter warns (vtkWarningMacro, naming the worst point),
+   * VerificationPassed is false and the output's field data say so
+   * (`VerificationStatus` 0, `VerificationReport`); the output is still produced.
+   */
+  vtkSetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationPassed, bool);
   ///@}
 
 protected:
@@ -86,11 +103,15 @@ protected:
   double Step = 1e-3;
   double BranchCheckStep = 1e-2;
   bool VerifyOutput = true;
+  double VerificationTolerance = 1e-9;
 
   int NumberOfSegments = 0;
   int NumberOfBranchPoints = 0;
   int NumberOfEndPoints = 0;
   double MaximumVerifiedError = 0.0;
+  bool VerificationPassed = true;
+  double TracingSeconds = 0.0;
+  double VerificationSeconds = 0.0;
 
 private:
   vtkMAT2DFilter(const vtkMAT2DFilter&) = delete;

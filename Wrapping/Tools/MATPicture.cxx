@@ -3,6 +3,8 @@
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
 
+#include "brep/NormalisePieces.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -131,7 +133,7 @@ bool writeMATPicture(vtkUnstructuredGrid* boundary, vtkPolyData* mat, const std:
   window->AddRenderer(renderer);
   renderer->ResetCamera();
   // Look straight at the domain's plane: the camera's view-plane normal is the plane's.
-  const exactmat::Boundary2D b = exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(boundary));
+  const exactmat::Boundary2D b = exactmat::buildNormalised(exactmat::curvePiecesFromGrid(boundary));
   double c[3];
   curves->GetCenter(c);
   vtkCamera* camera = renderer->GetActiveCamera();

@@ -17,8 +17,8 @@
 #include "vtkNURBSReader.h"
 #include "vtkNURBSSource.h"
 
+#include "brep/NormalisePieces.h"
 #include "common/InputError.h"
-#include "mat2d/Generators.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -27,6 +27,7 @@
 #include <vtkIdList.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkPoints.h>
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
@@ -43,11 +44,19 @@
 #include <cstring>
 #include <iostream>
 #include <string>
+#include <cerrno>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
 namespace
 {
+// Exit codes (README): what a script needs to tell apart.
+constexpr int ExitInputError = 1;   ///< the input is invalid or the MAT cannot be computed
+constexpr int ExitUsage = 2;        ///< the command line is wrong
+constexpr int ExitVerification = 3; ///< the MAT was written but its self-verification failed
+constexpr int ExitOutputError = 4;  ///< the result could not be written
+
 const char* Usage = R"(usage:
   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
               [--png OUT.png] [--shape NAME]
@@ -85,7 +94,7 @@ struct Arguments
 [[noreturn]] void usageError(const std::string& message)
 {
   std::cerr << "exactmat: " << message << "\n" << Usage;
-  std::exit(2);
+  std::exit(ExitUsage);
 }
 
 double number(const std::string& flag, const char* text)
@@ -123,6 +132,11 @@ Arguments parse(int argc, char* argv[])
   if (argc < 2)
     usageError("no command");
   a.command = argv[1];
+  if (a.command == "-h" || a.command == "--help" || a.command == "help")
+  {
+    std::cout << Usage;
+    std::exit(0);
+  }
   for (int i = 2; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -186,10 +200,29 @@ public:
       m = m.substr(colon + 3);
     while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
       m.pop_back();
-    std::cerr << "exactmat: error: " << m << "\n";
+    if (!Quiet)
+      std::cerr << "exactmat: error: " << m << "\n";
     Failed = true;
   }
   bool Failed = false;
+  bool Quiet = false; ///< count the error, the caller words it
+};
+
+// Warnings (a failed self-verification) go to stderr as one line each and are remembered.
+class WarningLine : public vtkCommand
+{
+public:
+  static WarningLine* New() { return new WarningLine; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    std::string m = data ? static_cast<const char*>(data) : "unknown warning";
+    const size_t colon = m.find("): ");
+    if (colon != std::string::npos)
+      m = m.substr(colon + 3);
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+      m.pop_back();
+    std::cerr << "exactmat: warning: " << m << "\n";
+  }
 };
 
 // The 2D MAT settings shared by vtkMAT2DFilter and the profile of vtkMAT25DFilter.
@@ -212,9 +245,13 @@ bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors
   writer->SetFileName(path.c_str());
   writer->SetDataModeToBinary();
   writer->AddObserver(vtkCommand::ErrorEvent, errors);
-  if (writer->Write() != 1 || errors->Failed)
+  const int written = writer->Write();
+  // VTK's XML writer reports a full disk through its error code, not always its result.
+  if (written != 1 || errors->Failed || writer->GetErrorCode() != vtkErrorCode::NoError)
   {
-    std::cerr << "exactmat: error: cannot write '" << path << "'\n";
+    std::cerr << "exactmat: error: cannot write '" << path << "'"
+              << (writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError ? ": out of disk space" : "")
+              << "\n";
     return false;
   }
   return true;
@@ -242,6 +279,36 @@ public:
   int LastDecile = -1;
 };
 
+// Why `path` cannot be a VTK XML unstructured grid, or "" when it may be one: VTK's own
+// reader only says "Error parsing input file", which names neither the file nor the cause.
+std::string whyNotVTU(const std::string& path)
+{
+  struct stat info;
+  if (stat(path.c_str(), &info) != 0 || access(path.c_str(), R_OK) != 0)
+    return "cannot read '" + path + "': " + std::strerror(errno);
+  if (S_ISDIR(info.st_mode))
+    return "'" + path + "' is a directory, not a .vtu file";
+  if (info.st_size == 0)
+    return "'" + path + "' is empty";
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f)
+    return "cannot read '" + path + "': " + std::strerror(errno);
+  std::string head(1024, '\0');
+  head.resize(std::fread(&head[0], 1, head.size(), f));
+  std::fclose(f);
+  if (head.rfind("# vtk DataFile", 0) == 0)
+    return "'" + path + "' is a legacy VTK file, not VTK XML: save it as .vtu (e.g. with " +
+      "ParaView or vtkXMLUnstructuredGridWriter)";
+  const size_t file = head.find("<VTKFile");
+  if (file == std::string::npos)
+    return "'" + path + "' is not a VTK XML file (no <VTKFile> element at its start)";
+  const size_t type = head.find("type=\"", file);
+  if (type != std::string::npos && head.compare(type + 6, 17, "UnstructuredGrid\"") != 0)
+    return "'" + path + "' is a VTK XML " + head.substr(type + 6, head.find('"', type + 6) - type - 6) +
+      " file, not an UnstructuredGrid (.vtu) of boundary curves";
+  return "";
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine* errors, std::string& label)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -263,15 +330,27 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
   }
   else if (endsWith(a.input, ".vtu"))
   {
-    if (access(a.input.c_str(), R_OK) != 0)
+    const std::string why = whyNotVTU(a.input);
+    if (!why.empty())
     {
-      std::cerr << "exactmat: error: cannot read '" << a.input << "'\n";
+      std::cerr << "exactmat: error: " << why << "\n";
       return nullptr;
     }
-    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    // VTK's parse errors are replaced by one that names the file.
+    vtkNew<ErrorLine> parseErrors;
+    parseErrors->Quiet = true;
+    vtkNew<vtkXMLUnstructuredGridReader> r;
     r->SetFileName(a.input.c_str());
-    reader = r;
+    r->AddObserver(vtkCommand::ErrorEvent, parseErrors);
+    r->Update();
+    if (parseErrors->Failed || r->GetErrorCode() != vtkErrorCode::NoError)
+    {
+      std::cerr << "exactmat: error: '" << a.input
+                << "' is not a readable VTK XML UnstructuredGrid (truncated or corrupt)\n";
+      return nullptr;
+    }
     label = a.input;
+    return vtkSmartPointer<vtkUnstructuredGrid>(r->GetOutput());
   }
   else
   {
@@ -318,53 +397,40 @@ int run2D(const Arguments& a)
   std::string label;
   vtkSmartPointer<vtkUnstructuredGrid> boundary = loadBoundary(a, errors, label);
   if (!boundary)
-    return 1;
+    return ExitInputError;
 
   vtkNew<vtkMAT2DFilter> mat;
   mat->SetInputData(boundary);
   setProfileSteps(mat.GetPointer(), a);
-  mat->VerifyOutputOff(); // verified below, independently, and timed apart
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<WarningLine> warnings;
+  mat->AddObserver(vtkCommand::WarningEvent, warnings);
   vtkNew<ProgressLine> progress;
   progress->What = "tracing";
   mat->AddObserver(vtkCommand::ProgressEvent, progress);
-  const auto start = std::chrono::steady_clock::now();
   mat->Update();
-  const double traceMs =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (errors->Failed)
-    return 1;
+    return ExitInputError;
   vtkPolyData* out = mat->GetOutput();
-
-  // Independent check: every point's global distance to the exact boundary vs Radius.
-  const auto verifyStart = std::chrono::steady_clock::now();
-  const exactmat::Boundary2D b =
-    exactmat::Boundary2D::build(exactmat::curvePiecesFromGrid(boundary));
-  const exactmat::Generators g(b);
-  vtkDataArray* radius = out->GetPointData()->GetArray(exactmat::arrays::Radius);
+  const double traceMs = 1e3 * mat->GetTracingSeconds();
+  const double verifyMs = 1e3 * mat->GetVerificationSeconds();
+  const exactmat::Boundary2D b = exactmat::buildNormalised(exactmat::curvePiecesFromGrid(boundary));
   vtkDataArray* type = out->GetPointData()->GetArray(exactmat::arrays::PointType);
-  double worst = 0.0;
   int counts[6] = { 0, 0, 0, 0, 0, 0 };
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
   {
-    double x[3];
-    out->GetPoint(i, x);
-    const exactmat::Vec3 l = b.plane().toLocal(exactmat::Vec3(x[0], x[1], x[2]));
-    worst = std::max(worst, std::abs(g.distance(exactmat::Vec2(l.x(), l.y())) - radius->GetTuple1(i)));
     const int t = static_cast<int>(type->GetTuple1(i));
     if (t >= 0 && t < 6)
       ++counts[t];
   }
-  const double verifyMs =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - verifyStart).count();
 
   if (!writePolyData(out, a.output, errors))
-    return 1;
+    return ExitOutputError;
 
   const int holes = b.holeCount();
   std::printf("ExactMAT 2D medial axis transform of %s\n", label.c_str());
   std::printf("  boundary            %zu loops (%d holes), %zu Bezier pieces, size %.6g\n",
-    b.loops().size(), holes, b.edges().size(), b.diagonal());
+    b.loops().size(), holes, b.edges().size(), b.userLength(b.diagonal()));
   std::printf("  mode                %s\n",
     a.step > 0 ? ("fixed step " + std::to_string(a.step)).c_str()
                : ("adaptive, tolerance " + std::to_string(a.tolerance)).c_str());
@@ -375,7 +441,9 @@ int run2D(const Arguments& a)
   std::printf("  cycles              %d (holes: %d)\n", cycleCount(out), holes);
   std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
   std::printf("  time                %.2f ms tracing, %.2f ms verification\n", traceMs, verifyMs);
-  std::printf("  largest verified error  %.3g (|distance to boundary - radius| / size)\n", worst / b.diagonal());
+  std::printf("  largest verified error  %.3g (|distance to boundary - radius| / size)\n",
+    mat->GetMaximumVerifiedError());
+  std::printf("  verification        %s\n", mat->GetVerificationPassed() ? "passed" : "FAILED");
   std::printf("  wrote               %s\n", a.output.c_str());
 
   if (!a.png.empty())
@@ -389,11 +457,11 @@ int run2D(const Arguments& a)
     if (!writeMATPicture(boundary, out, a.png, title, error))
     {
       std::cerr << "exactmat: error: " << error << "\n";
-      return 1;
+      return ExitOutputError;
     }
     std::printf("  wrote               %s\n", a.png.c_str());
   }
-  return 0;
+  return mat->GetVerificationPassed() ? 0 : ExitVerification;
 }
 
 int run25D(const Arguments& a)
@@ -405,7 +473,7 @@ int run25D(const Arguments& a)
   std::string label;
   vtkSmartPointer<vtkUnstructuredGrid> profile = loadBoundary(a, errors, label);
   if (!profile)
-    return 1;
+    return ExitInputError;
   double bounds[6];
   profile->GetBounds(bounds);
   double axis[6] = { bounds[0] - 0.5 * (bounds[1] - bounds[0]), 0.5 * (bounds[2] + bounds[3]),
@@ -429,6 +497,8 @@ int run25D(const Arguments& a)
   setProfileSteps(mat.GetPointer(), a);
   mat->SetSheetResolution(a.sheetResolution);
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<WarningLine> warnings;
+  mat->AddObserver(vtkCommand::WarningEvent, warnings);
   vtkNew<ProgressLine> progress;
   progress->What = "computing";
   mat->AddObserver(vtkCommand::ProgressEvent, progress);
@@ -437,11 +507,11 @@ int run25D(const Arguments& a)
   const double totalMs =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (errors->Failed)
-    return 1;
+    return ExitInputError;
   vtkPolyData* out = mat->GetOutput();
 
   if (!writePolyData(out, a.output, errors))
-    return 1;
+    return ExitOutputError;
   const double profileMs = 1e3 * mat->GetProfileSeconds();
   const double buildMs = 1e3 * mat->GetConstructionSeconds();
   char sweep[160];
@@ -463,6 +533,7 @@ int run25D(const Arguments& a)
               "touchpoint mismatches %d\n",
     mat->GetNumberOfVerifiedPoints(), mat->GetMaximumVerifiedError(),
     mat->GetNumberOfTouchpointMismatches());
+  std::printf("  verification        %s\n", mat->GetVerificationPassed() ? "passed" : "FAILED");
   std::printf("  wrote               %s\n", a.output.c_str());
 
   if (!a.png.empty())
@@ -492,7 +563,7 @@ int run25D(const Arguments& a)
     solid->AddObserver(vtkCommand::ErrorEvent, errors);
     solid->Update();
     if (errors->Failed)
-      return 1;
+      return ExitInputError;
     std::string error;
     const std::string title = "MAT of " + label + " " + (revolve ? "revolved" : "extruded") + ": " +
       std::to_string(mat->GetNumberOfJunctions()) + " junctions, " +
@@ -501,11 +572,11 @@ int run25D(const Arguments& a)
     if (!writeSolidMATPicture(solid->GetOutput(), out, a.png, title, error))
     {
       std::cerr << "exactmat: error: " << error << "\n";
-      return 1;
+      return ExitOutputError;
     }
     std::printf("  wrote               %s\n", a.png.c_str());
   }
-  return 0;
+  return mat->GetVerificationPassed() ? 0 : ExitVerification;
 }
 } // namespace
 
@@ -545,6 +616,6 @@ int main(int argc, char* argv[])
   catch (const exactmat::InputError& e)
   {
     std::cerr << "exactmat: error: " << e.what() << "\n";
-    return 1;
+    return ExitInputError;
   }
 }

@@ -128,6 +128,7 @@ Boundary2D Boundary2D::build(const std::vector<CurvePiece>& pieces, const Option
     fail("empty input: the boundary has no curves");
   }
   Boundary2D b;
+  b.UserFrame = options.userFrame;
   for (size_t i = 0; i < pieces.size(); ++i)
   {
     pieces[i].curve.toNurbs().validate(pieceName(pieces, i));
@@ -156,7 +157,7 @@ void Boundary2D::findPlane(const std::vector<CurvePiece>& pieces, const Options&
   if (!(Diagonal > 0.0))
   {
     fail("degenerate input: all ", points.size(), " control points coincide at ",
-      format(points.front()));
+      format(UserFrame.toUser(points.front())));
   }
   ThePlane = Plane::fit(points);
   const double tol = options.planarityTolerance * Diagonal;
@@ -168,7 +169,7 @@ void Boundary2D::findPlane(const std::vector<CurvePiece>& pieces, const Options&
       if (std::abs(off) > tol)
       {
         fail("non-planar boundary: control point ", k, " of ", pieceName(pieces, i), " lies ",
-          off, " off the plane through the boundary (tolerance ", tol, ")");
+          UserFrame.lengthToUser(off), " off the plane through the boundary (tolerance ", UserFrame.lengthToUser(tol), ")");
       }
     }
   }
@@ -193,7 +194,7 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
     if (!(box.diagonal().norm() > tol))
     {
       fail(pieceName(pieces, i), " is degenerate: all its control points coincide at ",
-        format(pieces[i].curve.startPoint()));
+        format(UserFrame.toUser(pieces[i].curve.startPoint())));
     }
   }
   // Ends 2i (start) and 2i+1 (end) of piece i, merged by shared ids, then by coordinates.
@@ -241,7 +242,7 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
     {
       const int e = ends.front();
       fail("open loop: ", pieceName(pieces, e / 2), (e % 2 == 0 ? " starts" : " ends"), " at ",
-        format(pieces[e / 2].curve.evaluate(e % 2 == 0 ? 0.0 : 1.0)),
+        format(UserFrame.toUser(pieces[e / 2].curve.evaluate(e % 2 == 0 ? 0.0 : 1.0))),
         " where no other edge starts or ends");
     }
     if (ends.size() > 2)
@@ -251,7 +252,8 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
       {
         names += (names.empty() ? "" : ", ") + pieceName(pieces, e / 2);
       }
-      fail("non-manifold vertex at ", format(pieces[ends[0] / 2].curve.evaluate(ends[0] % 2)),
+      fail("non-manifold vertex at ",
+        format(UserFrame.toUser(pieces[ends[0] / 2].curve.evaluate(ends[0] % 2))),
         ": ", ends.size(), " edge ends meet there (", names,
         "); each vertex must join exactly two edges");
     }
@@ -383,7 +385,7 @@ void Boundary2D::checkIntersections() const
       }
       if (segmentsIntersect(s.a, s.b, t.a, t.b))
       {
-        const Vec3 at = ThePlane.toWorld(0.5 * (s.a + s.b));
+        const Vec3 at = userPoint(Vec3(0.5 * (s.a + s.b)));
         if (s.loop == t.loop)
         {
           fail("self-intersecting loop ", s.loop, ": ", Edges[s.edge].name(),
@@ -415,7 +417,7 @@ void Boundary2D::classifyVertices(const Options& options)
       if (std::abs(v.turningAngle) > M_PI - options.angularTolerance)
       {
         fail("cusp where ", in.name(), " meets ", out.name(), " at ",
-          format(ThePlane.toWorld(v.point)),
+          format(userPoint(v.point)),
           ": the tangents are opposite (interior angle 0 or 360 degrees)");
       }
       if (std::abs(v.turningAngle) <= options.angularTolerance)

@@ -9,6 +9,7 @@
 /// (thesis §3.2) and rejects bad input with an InputError that names the edge.
 
 #include "brep/Plane.h"
+#include "common/Normalisation.h"
 #include "nurbs/BezierCurve.h"
 
 #include <string>
@@ -78,6 +79,9 @@ public:
     /// Control points farther than this fraction of the diagonal from the fitted plane
     /// make the input non-planar.
     double planarityTolerance = 1e-9;
+    /// The map from the pieces' frame back to the user's (brep/NormalisePieces.h): error
+    /// messages and userPoint() report places where the user sees them.
+    Normalisation userFrame;
   };
 
   /// Builds the B-rep; throws InputError for an empty input, invalid pieces (NaN, weights
@@ -94,6 +98,11 @@ public:
   const std::vector<Vertex2D>& vertices() const { return Vertices; }
   const std::vector<Loop2D>& loops() const { return Loops; }
   double diagonal() const { return Diagonal; }
+  /// A point of the local (plane) frame in the user's frame, and a length likewise.
+  Vec3 userPoint(const Vec3& local) const { return UserFrame.toUser(ThePlane.toWorld(local)); }
+  Vec3 userPoint(const Vec2& local) const { return userPoint(Vec3(local.x(), local.y(), 0.0)); }
+  double userLength(double l) const { return UserFrame.lengthToUser(l); }
+  const Normalisation& userFrame() const { return UserFrame; }
   int holeCount() const;
   int countVertices(VertexKind kind) const;
 
@@ -105,6 +114,7 @@ private:
   void classifyVertices(const Options& options);
 
   Plane ThePlane;
+  Normalisation UserFrame;
   double Diagonal = 0.0;
   std::vector<Edge2D> Edges;
   std::vector<Vertex2D> Vertices;

@@ -32,4 +32,14 @@ template <typename... Parts>
   throw InputError(os.str());
 }
 
+/// A user-set parameter must be a number in [lo, hi]: NaN slips through clamping setters
+/// (every comparison with NaN is false), so each run checks its parameters by name.
+inline void checkParameter(const char* name, double value, double lo, double hi)
+{
+  if (!(value >= lo && value <= hi))
+  {
+    fail(name, " is ", value, "; it must be a number from ", lo, " to ", hi);
+  }
+}
+
 } // namespace exactmat

@@ -1,5 +1,7 @@
 #include "Verification.h"
 
+#include "common/Format.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -42,6 +44,27 @@ MAT25DVerification verifyMAT25D(
     }
   }
   return v;
+}
+
+std::string MAT25DVerification::problems(double distanceTolerance, const MedialComplex& mat,
+  const std::function<Vec3(const Vec3&)>& toUser) const
+{
+  std::string out;
+  if (!(maxDistanceError <= distanceTolerance) && worstPoint >= 0)
+  {
+    out += "largest |distance to boundary - radius| / size " + format(maxDistanceError) +
+      " > tolerance " + format(distanceTolerance) + " at " + format(toUser(mat.points[worstPoint].x));
+  }
+  if (contactMismatches > 0)
+  {
+    const MedialPoint3D& p = mat.points[firstMismatch];
+    out += std::string(out.empty() ? "" : "; ") + std::to_string(contactMismatches) + " of " +
+      std::to_string(contactsChecked) + " points touch the boundary at another number of " +
+      "points than constructed (first: " + toString(p.type) + " point at " + format(toUser(p.x)) +
+      " touches " + std::to_string(firstMismatchCount) + ", expected " +
+      std::to_string(p.contacts) + ")";
+  }
+  return out;
 }
 
 } // namespace exactmat

@@ -7,6 +7,9 @@
 #include "mat25d/MedialComplex.h"
 #include "mat25d/SweptBoundary.h"
 
+#include <functional>
+#include <string>
+
 namespace exactmat
 {
 
@@ -24,6 +27,10 @@ struct MAT25DVerification
   {
     return maxDistanceError <= distanceTolerance && contactMismatches == 0;
   }
+  /// What is wrong and where, in one line ("" when ok); `toUser` maps the complex's
+  /// points to the frame the user sees.
+  std::string problems(double distanceTolerance, const MedialComplex& mat,
+    const std::function<Vec3(const Vec3&)>& toUser) const;
 };
 
 /// Checks every point of the curves (junctions, seams, seam ends, skeletal edges, centre

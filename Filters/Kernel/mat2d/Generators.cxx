@@ -1,5 +1,7 @@
 #include "Generators.h"
 
+#include "common/Format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -96,6 +98,11 @@ Generators::Generators(const Boundary2D& boundary)
       ReflexCorners.push_back(static_cast<int>(g));
     }
   }
+}
+
+std::string Generators::describe(const Vec2& x) const
+{
+  return format(Boundary->userPoint(x));
 }
 
 GeneratorPoint Generators::evaluate(int gi, double s) const

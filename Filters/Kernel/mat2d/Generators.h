@@ -12,6 +12,7 @@
 #include "brep/Boundary2D.h"
 #include "geometry/BoundingVolumeHierarchy.h"
 
+#include <string>
 #include <vector>
 
 namespace exactmat
@@ -64,6 +65,8 @@ public:
   int size() const { return static_cast<int>(List.size()); }
   const Generator& operator[](int g) const { return List[g]; }
   double size2D() const { return Boundary->diagonal(); }
+  /// "(x, y, z)": a point of the domain's frame where the user sees it, for messages.
+  std::string describe(const Vec2& x) const;
 
   GeneratorPoint evaluate(int g, double s) const;
 

@@ -100,6 +100,11 @@ int MedialGraph::count(MedialPointType type) const
 
 int MedialGraph::cycleCount() const
 {
+  return static_cast<int>(segments.size()) - static_cast<int>(nodes.size()) + componentCount();
+}
+
+int MedialGraph::componentCount() const
+{
   std::vector<int> parent(nodes.size());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int a) {
@@ -117,7 +122,7 @@ int MedialGraph::cycleCount() const
       --components;
     }
   }
-  return static_cast<int>(segments.size()) - static_cast<int>(nodes.size()) + components;
+  return components;
 }
 
 double MedialGraph::maximumRadius() const

@@ -60,6 +60,8 @@ struct MedialGraph
   double maximumRadius() const;
   /// Independent cycles: segments − nodes + connected components.
   int cycleCount() const;
+  /// Connected components (a connected domain has one).
+  int componentCount() const;
   int pointCount() const;
 };
 

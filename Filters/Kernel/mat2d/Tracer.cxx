@@ -489,7 +489,7 @@ void Tracer::trace(const Pending& p)
     {
       fail("2D MAT: tracing the segment of generators ", a.g, " and ", b.g,
         " did not end within ", O.maxSamplesPerSegment, " steps (near ",
-        seg.samples.back().x.transpose(), ")");
+        G.describe(seg.samples.back().x), ")");
     }
     // Fronts at the end of their generator move on, or stop at a convex vertex.
     if (a.s >= 1.0 - ParamEps)
@@ -601,8 +601,8 @@ void Tracer::trace(const Pending& p)
         endAtCentre();
         break;
       }
-      fail("2D MAT: the bisector of generators ", a.g, " and ", b.g, " is singular at (",
-        x0.transpose(), ")");
+      fail("2D MAT: the bisector of generators ", a.g, " and ", b.g, " is singular at ",
+        G.describe(x0));
     }
 
     bool accepted = false;
@@ -726,7 +726,7 @@ void Tracer::trace(const Pending& p)
             break;
           }
           fail("2D MAT: cannot continue the segment of generators ", a.g, " and ", b.g,
-            " at (", x0.transpose(), "), radius ", y.r);
+            " at ", G.describe(x0), ", radius ", G.boundary().userLength(y.r));
         }
         continue;
       }
@@ -838,8 +838,8 @@ void Tracer::trace(const Pending& p)
         const int id = findNode(x1, 1e-6 * L);
         if (id < 0)
         {
-          fail("2D MAT: the segment of generators ", a.g, " and ", b.g, " reached traced boundary at (",
-            x1.transpose(), ") where no MAT node is");
+          fail("2D MAT: the segment of generators ", a.g, " and ", b.g, " reached traced boundary at ",
+            G.describe(x1), " where no MAT node is");
         }
         seg.samples.back().x = Graph.nodes[id].sample.x;
         finish(id);
@@ -851,7 +851,7 @@ void Tracer::trace(const Pending& p)
     if (!accepted)
     {
       fail("2D MAT: no step could be taken on the segment of generators ", a.g, " and ", b.g,
-        " at (", x0.transpose(), ")");
+        " at ", G.describe(x0));
     }
   }
   seg.endNode = endNode;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "common/Format.h"
 
 namespace exactmat
 {
@@ -34,7 +37,13 @@ MAT2DVerification verifyMAT2D(const Generators& G, const MedialGraph& graph)
   const double L = G.size2D();
   auto checkPoint = [&](const Vec2& x, double r, int minFootpoints) {
     ++v.points;
-    v.maxDistanceError = std::max(v.maxDistanceError, std::abs(G.distance(x) - r) / L);
+    const double error = std::abs(G.distance(x) - r) / L;
+    if (!(error <= v.maxDistanceError)) // NaN counts as the worst
+    {
+      v.maxDistanceError = std::isnan(error) ? std::numeric_limits<double>::infinity() : error;
+      v.worstPoint = x;
+      v.worstRadius = r;
+    }
     if (minFootpoints > 0 && r > 1e-6 * L)
     {
       const auto f = G.footpointsWithin(x, r * (1.0 + 1e-6) + 1e-9 * L);
@@ -81,7 +90,30 @@ MAT2DVerification verifyMAT2D(const Generators& G, const MedialGraph& graph)
   }
   v.cycles = graph.cycleCount();
   v.holes = G.boundary().holeCount();
+  v.components = graph.componentCount();
+  v.domains = static_cast<int>(G.boundary().loops().size()) - v.holes;
   return v;
+}
+
+std::string MAT2DVerification::problems(double distanceTolerance) const
+{
+  std::string out;
+  auto add = [&](const std::string& s) { out += (out.empty() ? "" : "; ") + s; };
+  if (!(maxDistanceError <= distanceTolerance))
+    add("largest |distance to boundary - radius| / size " + format(maxDistanceError) +
+      " > tolerance " + format(distanceTolerance));
+  if (footpointShortfalls > 0)
+    add(std::to_string(footpointShortfalls) + " points with too few footpoints");
+  if (uncovered > CoverageSlack)
+    add("boundary parameter " + format(uncovered) + " not swept by footpoints");
+  if (coveredTwice > CoverageSlack)
+    add("boundary parameter " + format(coveredTwice) + " swept twice");
+  if (cycles != holes)
+    add(std::to_string(cycles) + " cycles for " + std::to_string(holes) + " holes");
+  if (components != domains)
+    add(std::to_string(components) + " connected components for " + std::to_string(domains) +
+      " connected domain" + (domains == 1 ? "" : "s"));
+  return out;
 }
 
 } // namespace exactmat

@@ -34,9 +34,13 @@ std::string cellName(vtkIdType cell, int entity, const char* kind)
   return s;
 }
 
+// Reads a grid's points, weights, degrees and entity ids with every index and array
+// length checked first: a file is data from outside, and a cell naming a point that is
+// not there must be an error that names both, never a read past an array's end.
 struct GridAccess
 {
   vtkUnstructuredGrid* grid;
+  vtkIdType pointCount = 0;
   vtkDataArray* weights = nullptr;
   vtkDataArray* degrees = nullptr;
   vtkDataArray* entities = nullptr;
@@ -48,39 +52,102 @@ struct GridAccess
     {
       fail("empty input: the boundary grid has no cells");
     }
+    pointCount = g->GetPoints() ? g->GetNumberOfPoints() : 0;
+    if (pointCount == 0)
+    {
+      fail("the boundary grid has ", g->GetNumberOfCells(), " cells but no points");
+    }
     // By name, or as the attribute VTK's own Bézier cells use.
     weights = g->GetPointData()->GetArray(arrays::RationalWeights);
     weights = weights ? weights : g->GetPointData()->GetRationalWeights();
     degrees = g->GetCellData()->GetArray(arrays::HigherOrderDegrees);
     degrees = degrees ? degrees : g->GetCellData()->GetHigherOrderDegrees();
     entities = g->GetCellData()->GetArray(entityArray);
+    const vtkIdType cells = g->GetNumberOfCells();
+    if (weights && weights->GetNumberOfTuples() < pointCount)
+    {
+      fail("point data ", arrays::RationalWeights, " has ", weights->GetNumberOfTuples(),
+        " values for ", pointCount, " points");
+    }
+    if (degrees && degrees->GetNumberOfTuples() < cells)
+    {
+      fail("cell data ", arrays::HigherOrderDegrees, " has ", degrees->GetNumberOfTuples(),
+        " values for ", cells, " cells");
+    }
+    if (entities && entities->GetNumberOfTuples() < cells)
+    {
+      fail("cell data ", entityArray, " has ", entities->GetNumberOfTuples(), " values for ",
+        cells, " cells");
+    }
   }
 
   int entity(vtkIdType cell) const
   {
-    return entities ? static_cast<int>(entities->GetComponent(cell, 0)) : static_cast<int>(cell);
+    if (!entities)
+      return static_cast<int>(std::min<vtkIdType>(cell, std::numeric_limits<int>::max()));
+    const double e = entities->GetComponent(cell, 0);
+    // Out of int's range or not an integer: keep the cell's own index.
+    return (e >= -1.0 && e <= std::numeric_limits<int>::max() && e == std::floor(e))
+      ? static_cast<int>(e)
+      : static_cast<int>(std::min<vtkIdType>(cell, std::numeric_limits<int>::max()));
   }
 
-  Vec4 point(vtkIdType id, const std::string& where) const
+  /// The cell's points as homogeneous control points, in the cell's own order, with the
+  /// weights divided by the cell's largest (the curve or patch is unchanged; the
+  /// homogeneous coordinates stay finite whatever the weights' scale).
+  Vec4List cellPoints(vtkIdList* ids, const std::string& where) const
   {
-    double x[3];
-    grid->GetPoint(id, x);
-    const double w = weights ? weights->GetComponent(id, 0) : 1.0;
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    const vtkIdType n = ids->GetNumberOfIds();
+    std::vector<double> w(n, 1.0);
+    double largest = 0.0;
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      fail(where, ": point ", id, " has a NaN or infinite coordinate");
+      const vtkIdType id = ids->GetId(k);
+      if (id < 0 || id >= pointCount)
+      {
+        fail(where, ": its point ", k, " is point id ", id, ", but the grid has ", pointCount,
+          " points (ids 0 to ", pointCount - 1, ")");
+      }
+      w[k] = weights ? weights->GetComponent(id, 0) : 1.0;
+      if (!std::isfinite(w[k]) || !(w[k] > 0.0))
+      {
+        fail(where, ": point ", id, " has weight ", w[k], " (", arrays::RationalWeights,
+          " must be positive and finite)");
+      }
+      largest = std::max(largest, w[k]);
     }
-    if (!std::isfinite(w) || !(w > 0.0))
+    Vec4List h(n);
+    for (vtkIdType k = 0; k < n; ++k)
     {
-      fail(where, ": point ", id, " has weight ", w, " (", arrays::RationalWeights, " must be > 0)");
+      double x[3];
+      grid->GetPoint(ids->GetId(k), x);
+      if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      {
+        fail(where, ": point ", ids->GetId(k), " has a NaN or infinite coordinate");
+      }
+      h[k] = homogeneous(Vec3(x[0], x[1], x[2]), w[k] / largest);
     }
-    return homogeneous(Vec3(x[0], x[1], x[2]), w);
+    return h;
   }
 
-  int degree(vtkIdType cell, int component, int fallback) const
+  /// The degree stored for the cell (component 0 or 1), or `fallback` without the array;
+  /// an entry that is not an integer in [1, MaximumDegree] is an error naming the cell.
+  int degree(vtkIdType cell, int component, int fallback, const std::string& where) const
   {
-    return degrees ? static_cast<int>(degrees->GetComponent(cell, component)) : fallback;
+    if (!degrees)
+      return fallback;
+    if (component >= degrees->GetNumberOfComponents())
+      return fallback;
+    const double d = degrees->GetComponent(cell, component);
+    if (!(d >= 1.0 && d <= MaximumDegree) || d != std::floor(d))
+    {
+      fail(where, ": ", arrays::HigherOrderDegrees, " gives degree ", d,
+        " (a degree must be an integer from 1 to ", MaximumDegree, ")");
+    }
+    return static_cast<int>(d);
   }
+
+  static constexpr int MaximumDegree = 32;
 };
 } // namespace
 
@@ -116,18 +183,24 @@ std::vector<CurvePiece> curvePiecesFromGrid(vtkUnstructuredGrid* grid)
     const int type = grid->GetCellType(c);
     if (type == VTK_BEZIER_CURVE)
     {
-      const int p = g.degree(c, 0, n - 1);
-      if (p != n - 1 || p < 1)
+      if (n < 2 || n > GridAccess::MaximumDegree + 1)
+      {
+        fail(where, ": a Bezier curve cell needs 2 to ", GridAccess::MaximumDegree + 1,
+          " points, it has ", n);
+      }
+      const int p = g.degree(c, 0, n - 1, where);
+      if (p != n - 1)
       {
         fail(where, ": Bezier curve of degree ", p, " has ", n, " points (needs ", p + 1, ")");
       }
       // VTK order: start, end, interior → Bézier order: start, interior…, end.
+      const Vec4List v = g.cellPoints(ids, where);
       Vec4List h(n);
-      h[0] = g.point(ids->GetId(0), where);
-      h[p] = g.point(ids->GetId(1), where);
+      h[0] = v[0];
+      h[p] = v[1];
       for (int i = 1; i < p; ++i)
       {
-        h[i] = g.point(ids->GetId(i + 1), where);
+        h[i] = v[i + 1];
       }
       pieces.push_back({ BezierCurve(std::move(h)), entity, ids->GetId(0), ids->GetId(1) });
     }
@@ -137,9 +210,10 @@ std::vector<CurvePiece> curvePiecesFromGrid(vtkUnstructuredGrid* grid)
       {
         fail(where, ": a line needs at least 2 points, it has ", n);
       }
+      const Vec4List v = g.cellPoints(ids, where);
       for (int i = 0; i + 1 < n; ++i)
       {
-        Vec4List h{ g.point(ids->GetId(i), where), g.point(ids->GetId(i + 1), where) };
+        Vec4List h{ v[i], v[i + 1] };
         // Lines are polynomial whatever the weights say.
         h[0] /= h[0].w();
         h[1] /= h[1].w();
@@ -183,14 +257,15 @@ std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid)
       if (type == VTK_BEZIER_QUADRILATERAL)
       {
         const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n)))) - 1;
-        order[0] = g.degree(c, 0, side);
-        order[1] = g.degree(c, 1, side);
+        order[0] = g.degree(c, 0, side, where);
+        order[1] = g.degree(c, 1, side, where);
       }
       if ((order[0] + 1) * (order[1] + 1) != n || order[0] < 1 || order[1] < 1)
       {
         fail(where, ": Bezier quadrilateral of degrees (", order[0], ", ", order[1], ") has ", n,
           " points");
       }
+      const Vec4List v = g.cellPoints(ids, where);
       Vec4List net(n);
       for (int i = 0; i <= order[0]; ++i)
       {
@@ -199,7 +274,7 @@ std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid)
           const int k = type == VTK_QUAD
             ? (i == 0 ? (j == 0 ? 0 : 3) : (j == 0 ? 1 : 2))
             : vtkHigherOrderQuadrilateral::PointIndexFromIJK(i, j, order);
-          net[i * (order[1] + 1) + j] = g.point(ids->GetId(k), where);
+          net[i * (order[1] + 1) + j] = v[k];
         }
       }
       piece.patch = BezierPatch(order[0], order[1], std::move(net));
@@ -208,10 +283,11 @@ std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid)
     {
       // n = (d+1)(d+2)/2
       const int d = static_cast<int>(std::lround((std::sqrt(8.0 * n + 1.0) - 3.0) / 2.0));
-      if ((d + 1) * (d + 2) / 2 != n || d < 1)
+      if ((d + 1) * (d + 2) / 2 != n || d < 1 || d > GridAccess::MaximumDegree)
       {
         fail(where, ": a Bezier triangle cannot have ", n, " points");
       }
+      const Vec4List v = g.cellPoints(ids, where);
       TriangleNet tri;
       tri.degree = d;
       tri.points.resize(n);
@@ -222,7 +298,7 @@ std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid)
           // VTK's barycentric index (i, j, k): powers of the weights of vertices 1, 2, 0.
           const vtkIdType b[3] = { i, j, d - i - j };
           const vtkIdType k = vtkHigherOrderTriangle::Index(b, d);
-          tri.points[TriangleNet::index(d, i, j)] = g.point(ids->GetId(k), where);
+          tri.points[TriangleNet::index(d, i, j)] = v[k];
         }
       }
       piece.triangle = tri;

@@ -1,0 +1,31 @@
+#include "vtkMATVerificationReport.h"
+
+#include "vtkExactMATArrayNames.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkStringArray.h>
+
+namespace exactmat
+{
+
+void attachVerification(vtkDataObject* output, const VerificationOutcome& outcome)
+{
+  vtkFieldData* fd = output->GetFieldData();
+  vtkNew<vtkIntArray> status;
+  status->SetName(arrays::VerificationStatus);
+  status->InsertNextValue(outcome.run ? (outcome.passed ? 1 : 0) : -1);
+  vtkNew<vtkDoubleArray> error;
+  error->SetName(arrays::MaximumVerifiedError);
+  error->InsertNextValue(outcome.maximumError);
+  vtkNew<vtkStringArray> report;
+  report->SetName(arrays::VerificationReport);
+  report->InsertNextValue(outcome.report);
+  fd->AddArray(status);
+  fd->AddArray(error);
+  fd->AddArray(report);
+}
+
+} // namespace exactmat
