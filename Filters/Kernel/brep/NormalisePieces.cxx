@@ -89,6 +89,11 @@ Normalisation normalise(std::vector<CurvePiece>& pieces)
 Boundary2D buildNormalised(std::vector<CurvePiece> pieces, Boundary2D::Options options)
 {
   options.userFrame = normalise(pieces);
+  // End points and planarity are known only to the input's rounding (a part far from the
+  // origin was rounded before it reached us): no tolerance below a few ulp of it.
+  const double rounding = 64.0 * options.userFrame.inputRounding();
+  options.pointTolerance = std::max(options.pointTolerance, rounding);
+  options.planarityTolerance = std::max(options.planarityTolerance, rounding);
   return Boundary2D::build(pieces, options);
 }
 

@@ -13,6 +13,8 @@
 
 #include "common/Types.h"
 
+#include <limits>
+
 namespace exactmat
 {
 
@@ -26,6 +28,13 @@ struct Normalisation
   Vec3 toUser(const Vec3& u) const { return u * scale + centre; }
   double lengthToUnit(double l) const { return l / scale; }
   double lengthToUser(double l) const { return l * scale; }
+  /// How far the user's coordinates are known, in unit-frame lengths: a coordinate of
+  /// magnitude |c| carries a rounding of ε·|c|, which is ε·|c|/scale here. Far from the
+  /// origin (a part at 1e7 × its size) that is far more than the unit frame's ε.
+  double inputRounding() const
+  {
+    return std::numeric_limits<double>::epsilon() * (1.0 + centre.cwiseAbs().maxCoeff() / scale);
+  }
 };
 
 } // namespace exactmat

@@ -217,7 +217,7 @@ void sortAndDedupe(std::vector<CurveFootpoint>& fps)
 } // namespace
 
 std::vector<CurveFootpoint> curveFootpoints(
-  const BezierCurve& curve, const Vec3& query, double maxDistance)
+  const BezierCurve& curve, const Vec3& query, double maxDistance, double continuumTolerance)
 {
   std::vector<CurveFootpoint> result;
   if (distanceToBox(curve.boundingBox(), query) > maxDistance)
@@ -245,7 +245,7 @@ std::vector<CurveFootpoint> curveFootpoints(
     return f;
   };
 
-  if (g.maxAbs() <= zero)
+  if (g.maxAbs() <= std::max(1e-14, continuumTolerance) * scale)
   {
     // Every point is stationary: the query is the centre of a circular arc (or the curve is
     // a point). Report one footpoint for the whole curve.

@@ -44,9 +44,11 @@ constexpr double Unbounded = std::numeric_limits<double>::infinity();
 
 /// Every local minimum of |C(t) − P| on t ∈ [0,1] with distance ≤ maxDistance, including
 /// one-sided minima at the ends; sorted by distance. For a query at the centre of a
-/// circular arc (all points equidistant) a single footpoint with `continuum` is returned.
-std::vector<CurveFootpoint> curveFootpoints(
-  const BezierCurve& curve, const Vec3& query, double maxDistance = Unbounded);
+/// circular arc (all points equidistant) a single footpoint with `continuum` is returned;
+/// "equidistant" means the stationarity polynomial vanishes to `continuumTolerance` of its
+/// scale (1e-14: rounding; more for input known only to fewer digits).
+std::vector<CurveFootpoint> curveFootpoints(const BezierCurve& curve, const Vec3& query,
+  double maxDistance = Unbounded, double continuumTolerance = 1e-14);
 
 /// The global closest point of the curve (the first of curveFootpoints).
 CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query);

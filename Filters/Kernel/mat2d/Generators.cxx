@@ -195,7 +195,8 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
   }
   for (int e : Tree.candidatesWithin(q, radius))
   {
-    for (const CurveFootpoint& f : curveFootpoints(edges[e].curve, q, radius))
+    for (const CurveFootpoint& f :
+      curveFootpoints(edges[e].curve, q, radius, 16.0 * Boundary->userFrame().inputRounding()))
     {
       const int g = GeneratorOfEdge[e];
       const GeneratorPoint gp = evaluate(g, f.t);

@@ -16,6 +16,11 @@ namespace
 {
 constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double ParamEps = 1e-12;
+/// Boundary parameter a front may stand inside coverage it did not sweep (where a branch
+/// point's footpoints were polished, to rounding): further than that slop, closer than a
+/// cluster of branch points split by a 1e-8 perturbation, whose short segments must be
+/// traced, not skipped as covered.
+constexpr double CoverageSlop = 1e-9;
 
 struct Pending
 {
@@ -199,6 +204,9 @@ private:
   /// Nodes by grid cell (cells of NodeCell·L), so finding a node near a point is O(1).
   std::unordered_map<long long, std::vector<int>> NodeGrid;
   static constexpr double NodeCell = 1e-5;
+  /// Branch points closer than this fraction of the size are one node (a node of degree
+  /// k ≥ 4): merging them moves a point by less than the verification's 1e-9.
+  static constexpr double NodeMerge = 5e-10;
   long long cellKey(long long i, long long j) const { return i * 73856093LL ^ j * 19349663LL; }
   int SegmentsSinceProgress = 0;
   std::deque<Pending> Queue;
@@ -297,7 +305,7 @@ bool Tracer::stepAlong(int& g, double& s, int dir, double distance) const
 bool Tracer::coveredAhead(int g, double s, int dir) const
 {
   // Further than the slop of a bisection, closer than any real feature.
-  return stepAlong(g, s, dir, 1e-6) && Cover.covers(g, s);
+  return stepAlong(g, s, dir, CoverageSlop) && Cover.covers(g, s);
 }
 
 BoundaryLocation Tracer::normalised(const BoundaryLocation& f, int dir) const
@@ -629,9 +637,9 @@ void Tracer::trace(const Pending& p)
       double hitB = Cover.firstAhead(b.g, b.s, b.s + lambda * dy(1), -1, b.interval);
       // Slivers left by the bisection that found this segment's start node are not
       // boundary traced before.
-      if (!aLeftStart && a.g == p.a.g && std::abs(hitA - p.a.s) < 1e-6)
+      if (!aLeftStart && a.g == p.a.g && std::abs(hitA - p.a.s) < CoverageSlop)
         hitA = NaN;
-      if (!bLeftStart && b.g == p.b.g && std::abs(hitB - p.b.s) < 1e-6)
+      if (!bLeftStart && b.g == p.b.g && std::abs(hitB - p.b.s) < CoverageSlop)
         hitB = NaN;
       bool joining = false;
       if (!std::isnan(hitA) && dy(0) > 0.0)
@@ -775,24 +783,40 @@ void Tracer::trace(const Pending& p)
               hi = mid;
           }
         };
+        // Polish with every candidate third generator and keep the branch point met
+        // first along the segment whose disk is empty: in a cluster of branch points
+        // closer than the bisection's precision (a regular polygon with a vertex moved by
+        // 1e-6) several candidates converge, each to its own branch point, and only the
+        // first one reached is on this segment's MAT.
         auto polish = [&]() {
           const Vec2 xg = B.point(yb);
           const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-7 * L);
           const GeneratorPoint fa = G.evaluate(a.g, yb.sa), fb = G.evaluate(b.g, yb.sb);
+          bool found = false;
+          BisectorState best = yb;
+          double bestDistance = INFINITY;
           for (const BoundaryLocation& c : near)
           {
             if ((c.point - fa.p).norm() < 1e-7 * L || (c.point - fb.p).norm() < 1e-7 * L || c.continuum)
               continue;
             BisectorState yp = yb;
             double sc = c.s;
-            if (polishBranchPoint(G, a.g, b.g, c.g, yp.sa, yp.sb, sc, yp.r, 1e-14 * L) &&
-              yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9 && (B.point(yp) - xg).norm() < 1e-6 * L)
+            if (!polishBranchPoint(G, a.g, b.g, c.g, yp.sa, yp.sb, sc, yp.r, 1e-14 * L) ||
+              !(yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9))
+              continue;
+            const Vec2 xp = B.point(yp);
+            const double fromStart = (xp - x0).norm();
+            if ((xp - xg).norm() < 1e-6 * L && fromStart < bestDistance &&
+              !G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)))
             {
-              yb = yp;
-              return true;
+              best = yp;
+              bestDistance = fromStart;
+              found = true;
             }
           }
-          return false;
+          if (found)
+            yb = best;
+          return found;
         };
         bisect(1e-8 * L);
         if (!polish())
@@ -804,9 +828,13 @@ void Tracer::trace(const Pending& p)
         b.interval = Cover.cover(b.g, yb.sb, y.sb, b.interval);
         y = yb;
         seg.samples.push_back(sampleOf(xb, yb.r));
-        const double reach = yb.r * (1.0 + 1e-7) + 1e-9 * L;
+        // The node is exact to rounding: footpoints farther than that belong to another
+        // branch point of a cluster (reached along one of this node's own segments).
+        const double reach = yb.r * (1.0 + 1e-10) + 1e-11 * L;
         std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, reach);
-        int id = findNode(xb, 1e-7 * L);
+        // Distinct branch points of a cluster may lie 1e-8 apart: only points closer than
+        // the verification's tolerance are the same node.
+        int id = findNode(xb, NodeMerge * L);
         if (id < 0)
         {
           id = addNode(xb, yb.r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps);
@@ -824,8 +852,8 @@ void Tracer::trace(const Pending& p)
       a.s = y1.sa;
       b.s = y1.sb;
       y = y1;
-      aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 1e-5;
-      bLeftStart = bLeftStart || b.g != p.b.g || std::abs(b.s - p.b.s) > 1e-5;
+      aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 10 * CoverageSlop;
+      bLeftStart = bLeftStart || b.g != p.b.g || std::abs(b.s - p.b.s) > 10 * CoverageSlop;
       seg.samples.push_back(sampleOf(x1, y1.r));
       if (check)
       {
@@ -855,6 +883,19 @@ void Tracer::trace(const Pending& p)
     }
   }
   seg.endNode = endNode;
+  if (endNode == seg.startNode)
+  {
+    // A sliver that leaves a node of degree k ≥ 4 and comes straight back (its branch
+    // points, split by rounding, are closer than NodeMerge): the node stands for it.
+    double extent = 0.0;
+    for (const MedialSample& m : seg.samples)
+      extent = std::max(extent, (m.x - Graph.nodes[endNode].sample.x).norm());
+    if (extent <= 1e-8 * L)
+    {
+      reportProgress();
+      return;
+    }
+  }
   Graph.segments.push_back(std::move(seg));
   const int sid = static_cast<int>(Graph.segments.size()) - 1;
   Graph.nodes[Graph.segments.back().startNode].segments.push_back(sid);
