@@ -25,6 +25,8 @@
 
 #include <chrono>
 #include <limits>
+#include <exception>
+#include <new>
 #include <string>
 
 vtkStandardNewMacro(vtkMAT25DFilter);
@@ -236,6 +238,16 @@ int vtkMAT25DFilter::RequestData(
   catch (const exactmat::InputError& e)
   {
     vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "out of memory: the input asks for more than this machine can hold");
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "internal error: " << e.what());
     return 0;
   }
   return 1;

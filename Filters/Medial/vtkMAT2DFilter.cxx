@@ -24,6 +24,8 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <chrono>
+#include <exception>
+#include <new>
 #include <string>
 
 vtkStandardNewMacro(vtkMAT2DFilter);
@@ -203,6 +205,16 @@ int vtkMAT2DFilter::RequestData(
   catch (const exactmat::InputError& e)
   {
     vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "out of memory: the input asks for more than this machine can hold");
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "internal error: " << e.what());
     return 0;
   }
   return 1;

@@ -7,6 +7,9 @@
 #include "mat2d/Tracer.h"
 #include "shapes/Catalogue.h"
 
+#include <exception>
+#include <new>
+
 #include <vtkDoubleArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -181,6 +184,11 @@ int vtkNURBSSource::RequestData(
       p.cornerRadius = this->CornerRadius;
       p.thickness = this->Thickness;
       p.count = this->Count;
+      if (!this->GetShapeName())
+      {
+        exactmat::fail("Shape is ", this->Shape, ", which is neither a catalogue shape (0 to ",
+          GetNumberOfCatalogueShapes() - 1, ") nor UserDefined (", static_cast<int>(UserDefined), ")");
+      }
       shape = exactmat::makeShape(this->GetShapeName(), p);
     }
     this->UpdateProgress(0.2);
@@ -216,6 +224,16 @@ int vtkNURBSSource::RequestData(
   catch (const exactmat::InputError& e)
   {
     vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "out of memory: the input asks for more than this machine can hold");
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "internal error: " << e.what());
     return 0;
   }
   return 1;

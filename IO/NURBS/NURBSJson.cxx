@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -60,13 +61,34 @@ const json& field(const json& entry, const char* name, const std::string& where)
   return entry.at(name);
 }
 
-int integer(const json& j, const std::string& where)
+// An integer in [lo, hi]: a degree of 4294967297 must not wrap to 1, nor 2.5 become 2.
+int integer(const json& j, const std::string& where, long long lo, long long hi)
 {
-  if (!j.is_number_integer())
+  const bool integral = j.is_number_integer() ||
+    (j.is_number_float() && j.get<double>() == std::floor(j.get<double>()));
+  const double v = j.is_number() ? j.get<double>() : 0.0;
+  if (!integral || !(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)))
   {
-    fail(where, " must be an integer");
+    fail(where, " must be an integer from ", lo, " to ", hi, " (got ", j.dump(), ")");
   }
-  return j.get<int>();
+  return static_cast<int>(v);
+}
+
+// Highest degree and largest control net a file may ask for (a typo such as 1e9 points
+// per direction must be an error, not an allocation of gigabytes).
+constexpr long long MaximumDegree = 32;
+constexpr long long MaximumNetSize = 1000000;
+
+// A rational curve or surface does not see a common factor of its weights: scale them so
+// the largest is 1, which keeps w·x finite for weights like 1e300.
+void normaliseWeights(std::vector<double>& w)
+{
+  double largest = 0.0;
+  for (double x : w)
+    largest = std::isfinite(x) ? std::max(largest, x) : largest;
+  if (largest > 0.0 && largest != 1.0)
+    for (double& x : w)
+      x /= largest;
 }
 } // namespace
 
@@ -77,8 +99,9 @@ Shape parseNURBSJson(const std::string& text, const std::string& source)
   {
     doc = json::parse(text);
   }
-  catch (const json::parse_error& e)
+  catch (const json::exception& e)
   {
+    // parse_error, and out_of_range for a number a double cannot hold (1e999)
     fail(source, ": not valid JSON (", e.what(), ")");
   }
   if (!doc.is_object())
@@ -106,7 +129,7 @@ Shape parseNURBSJson(const std::string& text, const std::string& source)
     {
       const std::string where = source + ": curves[" + std::to_string(i) + "]";
       const json& c = curves[i];
-      const int degree = integer(field(c, "degree", where), where + ".degree");
+      const int degree = integer(field(c, "degree", where), where + ".degree", 1, MaximumDegree);
       const KnotVector knots = numbers(field(c, "knots", where), where + ".knots");
       const Vec3List pts = points(field(c, "points", where), where + ".points");
       std::vector<double> w;
@@ -117,6 +140,7 @@ Shape parseNURBSJson(const std::string& text, const std::string& source)
         {
           fail(where, ": ", w.size(), " weights for ", pts.size(), " points");
         }
+        normaliseWeights(w);
       }
       NurbsCurve curve(degree, knots, pts, w);
       curve.validate(where);
@@ -134,27 +158,33 @@ Shape parseNURBSJson(const std::string& text, const std::string& source)
     {
       const std::string where = source + ": surfaces[" + std::to_string(i) + "]";
       const json& s = surfaces[i];
-      const std::vector<double> deg = numbers(field(s, "degree", where), where + ".degree");
-      const std::vector<double> size = numbers(field(s, "size", where), where + ".size");
+      const json& degreeField = field(s, "degree", where);
+      const json& sizeField = field(s, "size", where);
       const json& knots = field(s, "knots", where);
-      if (deg.size() != 2 || size.size() != 2 || !knots.is_array() || knots.size() != 2)
+      if (!degreeField.is_array() || degreeField.size() != 2 || !sizeField.is_array() ||
+        sizeField.size() != 2 || !knots.is_array() || knots.size() != 2)
       {
         fail(where, ": \"degree\", \"size\" and \"knots\" must each have two entries (u, v)");
       }
+      const int deg[2] = { integer(degreeField[0], where + ".degree[0]", 1, MaximumDegree),
+        integer(degreeField[1], where + ".degree[1]", 1, MaximumDegree) };
+      const int size[2] = { integer(sizeField[0], where + ".size[0]", 1, MaximumNetSize),
+        integer(sizeField[1], where + ".size[1]", 1, MaximumNetSize) };
       const Vec3List pts = points(field(s, "points", where), where + ".points");
       std::vector<double> w;
       if (s.contains("weights"))
       {
         w = numbers(s["weights"], where + ".weights");
+        normaliseWeights(w);
       }
-      const int nu = static_cast<int>(size[0]), nv = static_cast<int>(size[1]);
-      if (nu < 1 || nv < 1 || pts.size() != static_cast<size_t>(nu) * nv ||
+      const int nu = size[0], nv = size[1];
+      if (pts.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv) ||
         (!w.empty() && w.size() != pts.size()))
       {
         fail(where, ": ", pts.size(), " points and ", w.size(), " weights for a ", nu, " x ", nv,
           " net");
       }
-      NurbsSurface surface(static_cast<int>(deg[0]), static_cast<int>(deg[1]),
+      NurbsSurface surface(deg[0], deg[1],
         numbers(knots[0], where + ".knots[0]"), numbers(knots[1], where + ".knots[1]"), nu, nv,
         pts, w);
       surface.validate(where);

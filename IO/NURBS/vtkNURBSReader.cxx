@@ -5,6 +5,9 @@
 
 #include "common/InputError.h"
 
+#include <exception>
+#include <new>
+
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 
@@ -51,6 +54,16 @@ int vtkNURBSReader::RequestData(
   catch (const exactmat::InputError& e)
   {
     vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro(<< "out of memory reading " << this->FileName);
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "internal error reading " << this->FileName << ": " << e.what());
     return 0;
   }
   return 1;

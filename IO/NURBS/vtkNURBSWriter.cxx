@@ -7,6 +7,9 @@
 #include "common/InputError.h"
 #include "nurbs/BezierExtraction.h"
 
+#include <exception>
+#include <new>
+
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkErrorCode.h>
@@ -124,6 +127,12 @@ void vtkNURBSWriter::WriteData()
   catch (const exactmat::InputError& e)
   {
     vtkErrorMacro(<< e.what());
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "internal error: " << e.what());
     this->SetErrorCode(vtkErrorCode::UserError);
     return;
   }

@@ -133,6 +133,88 @@ class PythonPackage(unittest.TestCase):
         with self.assertRaisesRegex(exactmat.ExactMATError, "surface cells"):
             errors.check()
 
+    def test_verification_is_on_the_output(self):
+        source = vtkNURBSSource()
+        source.SetShapeName("ellipse")
+        mat = vtkMAT2DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.Update()
+        fd = mat.GetOutput().GetFieldData()
+        self.assertEqual(fd.GetArray("VerificationStatus").GetValue(0), 1)
+        self.assertLessEqual(fd.GetArray("MaximumVerifiedError").GetValue(0), 1e-9)
+        self.assertTrue(mat.GetVerificationPassed())
+        # A bound no floating-point result meets: the filter warns and says so on the output.
+        mat.SetVerificationTolerance(1e-300)
+        warnings = exactmat.ErrorObserver()
+        from vtkmodules.vtkCommonCore import vtkCommand
+        seen = []
+        mat.AddObserver(vtkCommand.WarningEvent, lambda obj, ev: seen.append(ev))
+        mat.Update()
+        self.assertEqual(mat.GetOutput().GetFieldData().GetArray("VerificationStatus").GetValue(0), 0)
+        self.assertIn("largest error at", mat.GetOutput().GetFieldData().GetAbstractArray("VerificationReport").GetValue(0))
+        self.assertFalse(mat.GetVerificationPassed())
+        self.assertTrue(seen)
+
+    def test_hostile_parameters_are_errors_not_crashes(self):
+        source = vtkNURBSSource()
+        source.SetShape(55)  # clamped to a value that is no shape
+        errors = exactmat.ErrorObserver().watch(source)
+        source.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, "neither a catalogue shape"):
+            errors.check()
+        for name, count in (("star", 10**9), ("blob", 2**29)):
+            source = vtkNURBSSource()
+            source.SetShapeName(name)
+            source.SetCount(count)
+            errors = exactmat.ErrorObserver().watch(source)
+            source.Update()
+            with self.assertRaisesRegex(exactmat.ExactMATError, "count"):
+                errors.check()
+        for setter in ("SetTolerance", "SetStep"):
+            source = vtkNURBSSource()
+            source.SetShapeName("rectangle")
+            mat = vtkMAT2DFilter()
+            mat.SetInputConnection(source.GetOutputPort())
+            getattr(mat, setter)(float("nan"))
+            errors = exactmat.ErrorObserver().watch(mat)
+            mat.Update()
+            with self.assertRaisesRegex(exactmat.ExactMATError, setter[3:] + " is nan"):
+                errors.check()
+
+    def test_hostile_grids_name_the_cell_and_the_array(self):
+        from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid, VTK_LINE
+        def grid(points, cells, weights=None):
+            g = vtkUnstructuredGrid()
+            if points is not None:
+                p = vtkPoints()
+                for x in points:
+                    p.InsertNextPoint(*x)
+                g.SetPoints(p)
+            for c in cells:
+                g.InsertNextCell(VTK_LINE, len(c), c)
+            if weights is not None:
+                w = vtkDoubleArray()
+                w.SetName("RationalWeights")
+                for v in weights:
+                    w.InsertNextValue(v)
+                g.GetPointData().AddArray(w)
+            return g
+        square = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+        cases = [
+            (grid(square, [(0, 1), (1, 2), (2, 7), (3, 0)]), "point id 7"),
+            (grid(square, [(0, 1), (1, 2), (2, -1), (3, 0)]), "point id -1"),
+            (grid(None, [(0, 1), (1, 2)]), "no points"),
+            (grid(square, [(0, 1), (1, 2), (2, 3), (3, 0)], weights=[1, 1]), "RationalWeights has 2 values for 4 points"),
+        ]
+        for g, message in cases:
+            mat = vtkMAT2DFilter()
+            mat.SetInputData(g)
+            errors = exactmat.ErrorObserver().watch(mat)
+            mat.Update()
+            with self.assertRaisesRegex(exactmat.ExactMATError, message):
+                errors.check()
+
     def check_xml_defaults(self, xml_name, proxy_name, instance, expected_count):
         """Every numeric property's default in the ParaView XML equals the C++ getter's."""
         xml = os.path.join(SOURCE_DIR, "Wrapping", "ParaView", "ExactMAT", xml_name)
@@ -150,7 +232,7 @@ class PythonPackage(unittest.TestCase):
         return proxy
 
     def test_mat2d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 5)
+        self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 6)
 
     def test_mat25d_filter_box_through_numpy(self):
         # The 4 x 2 rectangle extruded by 3: junctions (+-1, 0, 1) and (+-1, 0, 2), radius 1.
@@ -214,7 +296,7 @@ class PythonPackage(unittest.TestCase):
         self.assertEqual(solid.GetCellType(0), 77)  # VTK_BEZIER_QUADRILATERAL
 
     def test_mat25d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 12)
+        self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 13)
 
     def test_defaults_equal_the_paraview_xml(self):
         proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 13)

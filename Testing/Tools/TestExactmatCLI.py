@@ -1,5 +1,7 @@
 """The `exactmat` program as a user runs it: the main job on the bundled shape and on
 files, its summary, the .vtp it writes (checked numerically), the PNG, and bad input."""
+import json
+import math
 import os
 import re
 import subprocess
@@ -135,6 +137,104 @@ class ExactmatCLI(unittest.TestCase):
         self.assertIn("crosses the profile", r.stderr)
         r = run("revolve", "--axis", "1,2")
         self.assertEqual(r.returncode, 2)
+
+    def test_help_is_not_an_unknown_command(self):
+        for flag in ("--help", "-h", "help"):
+            r = run(flag)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("exit codes", r.stdout)
+
+    def test_failed_verification_exits_3_and_names_the_worst_point(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r = run("2d", "--shape", "ellipse", "--verify-tolerance", "1e-300", "-o",
+                    os.path.join(tmp, "m.vtp"))
+            self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
+            self.assertIn("verification failed", r.stderr)
+            self.assertIn("largest error at (", r.stderr)
+            self.assertIn("FAILED", r.stdout)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "m.vtp")))  # still written
+            r = run("extrude", "--shape", "rectangle", "--length", "3", "--verify-tolerance",
+                    "1e-300", "-o", os.path.join(tmp, "e.vtp"))
+            self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
+
+    def test_coordinates_and_weights_of_any_scale(self):
+        """The issue's reproducers: a 4 x 1.5 rectangle at (1e5, 1e5), near 1e300, with
+        weights x 1e300; a pentagon with a vertex moved by 2e-6 (a cluster of branch points)."""
+        def polygon(points, weight=None):
+            curves = []
+            for i, a in enumerate(points):
+                b = points[(i + 1) % len(points)]
+                c = {"degree": 1, "knots": [0, 0, 1, 1], "points": [list(a), list(b)]}
+                if weight:
+                    c["weights"] = [weight, weight]
+                curves.append(c)
+            return json.dumps({"format": "exactmat-nurbs", "version": 1, "curves": curves})
+
+        def rectangle(cx, cy, s=1.0):
+            return [(cx - 2 * s, cy - 0.75 * s), (cx + 2 * s, cy - 0.75 * s),
+                    (cx + 2 * s, cy + 0.75 * s), (cx - 2 * s, cy + 0.75 * s)]
+
+        pentagon = [(math.cos(2 * math.pi * k / 5), math.sin(2 * math.pi * k / 5)) for k in range(5)]
+        pentagon[0] = (1 + 2e-6, 0.0)
+        cases = {
+            "far.json": (polygon(rectangle(1e5, 1e5)), 2, 0.75),
+            "huge.json": (polygon(rectangle(0, 0, 1e300)), 2, 0.75e300),
+            "tiny.json": (polygon(rectangle(0, 0, 1e-300)), 2, 0.75e-300),
+            "heavy.json": (polygon(rectangle(0, 0), 1e300), 2, 0.75),
+            "light.json": (polygon(rectangle(0, 0), 1e-300), 2, 0.75),
+            "pentagon.json": (polygon(pentagon), None, None),
+        }
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, (text, branch_points, radius) in cases.items():
+                path = os.path.join(tmp, name)
+                with open(path, "w") as f:
+                    f.write(text)
+                r = run("2d", path, "-o", os.path.join(tmp, "m.vtp"))
+                self.assertEqual(r.returncode, 0, name + ": " + r.stdout + r.stderr)
+                self.assertIn("verification        passed", r.stdout, name)
+                self.assertLessEqual(summary_value(r.stdout, "largest verified error"), 1e-9, name)
+                if branch_points is not None:
+                    self.assertEqual(summary_value(r.stdout, "branch points"), branch_points, name)
+                    reader = vtkXMLPolyDataReader()
+                    reader.SetFileName(os.path.join(tmp, "m.vtp"))
+                    reader.Update()
+                    hi = reader.GetOutput().GetPointData().GetArray("Radius").GetRange()[1]
+                    self.assertAlmostEqual(hi / radius, 1.0, delta=1e-12, msg=name)
+
+    def test_hostile_files_get_errors_that_name_them(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            def write(name, text):
+                path = os.path.join(tmp, name)
+                with open(path, "w") as f:
+                    f.write(text)
+                return path
+            os.mkdir(os.path.join(tmp, "dir.vtu"))
+            cases = [
+                (os.path.join(tmp, "dir.vtu"), "is a directory"),
+                (write("empty.vtu", ""), "is empty"),
+                (write("legacy.vtu", "# vtk DataFile Version 3.0\nx\nASCII\n"), "legacy VTK file"),
+                (write("garbage.vtu", "\x01\x02 not xml at all"), "not a VTK XML file"),
+                (write("poly.vtu", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0">'),
+                 "not an UnstructuredGrid"),
+                (write("truncated.vtu", '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" '
+                       'version="1.0"><UnstructuredGrid><Piece NumberOfPoints="4"'), "truncated or corrupt"),
+                (write("overflow.json", '{"curves": [{"degree": 1, "knots": [0,0,1,1], '
+                       '"points": [[0,0],[1e999,0]]}]}'), "not valid JSON"),
+                (write("degree.json", '{"curves": [{"degree": 4294967297, "knots": [0,0,1,1], '
+                       '"points": [[0,0],[1,0]]}]}'), "degree must be an integer from 1 to 32"),
+            ]
+            for path, message in cases:
+                r = run("2d", path, "-o", os.path.join(tmp, "m.vtp"))
+                self.assertEqual(r.returncode, 1, path + ": " + r.stderr)
+                self.assertIn(message, r.stderr, path)
+                self.assertNotIn("ReadXMLInformation", r.stderr, path)
+
+    def test_a_full_disk_is_not_success(self):
+        if not os.path.exists("/dev/full"):
+            self.skipTest("no /dev/full")
+        r = run("2d", "--shape", "rectangle", "-o", "/dev/full")
+        self.assertEqual(r.returncode, 4, r.stdout + r.stderr)
+        self.assertIn("cannot write", r.stderr)
 
     def test_shapes_lists_the_catalogue(self):
         r = run("shapes")

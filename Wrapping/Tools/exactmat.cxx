@@ -59,7 +59,7 @@ constexpr int ExitOutputError = 4;  ///< the result could not be written
 
 const char* Usage = R"(usage:
   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
-              [--png OUT.png] [--shape NAME]
+              [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [--shape NAME]
                    [--sheet-resolution R] [--tolerance T | --step S]
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
@@ -73,6 +73,12 @@ const char* Usage = R"(usage:
   --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
                  default 10 S)
   --png OUT.png  a picture of the boundary and the MAT coloured by radius
+  --verify-tolerance V  the self-verification's bound on |distance - radius| / size
+                 (default 1e-9); a failed verification exits with 3
+  -h, --help     this text
+
+  exit codes: 0 done and verified, 1 invalid input (or the MAT cannot be computed),
+  2 usage error, 3 written but the self-verification failed, 4 output not written
 
   extrude, revolve: the MAT of the solid swept by the profile PROFILE (2D input as above)
   --length L     extrusion length along the profile plane's normal (needed)
@@ -86,7 +92,7 @@ const char* Usage = R"(usage:
 struct Arguments
 {
   std::string command, input, output, png, shape = "plate-with-holes";
-  double tolerance = 1e-4, step = 0.0, branchStep = 0.0;
+  double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
   double length = 0.0, angle = 360.0, sheetResolution = 0.02;
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
@@ -163,6 +169,8 @@ Arguments parse(int argc, char* argv[])
       a.angle = number(arg, value());
     else if (arg == "--axis")
       a.axis = numberList(arg, value());
+    else if (arg == "--verify-tolerance")
+      a.verifyTolerance = number(arg, value());
     else if (arg == "--sheet-resolution")
       a.sheetResolution = number(arg, value());
     else if (arg == "-h" || arg == "--help")
@@ -230,6 +238,7 @@ template <typename Filter>
 void setProfileSteps(Filter* mat, const Arguments& a)
 {
   mat->SetTolerance(a.tolerance);
+  mat->SetVerificationTolerance(a.verifyTolerance);
   if (a.step > 0.0)
   {
     mat->FixedStepOn();

@@ -59,6 +59,10 @@ NurbsCurve periodicBlob(const Vec3& centre, double radius, double amp, int lobes
   return NurbsCurve(p, knots, pts);
 }
 
+// More points or lobes than a boundary of a million pieces is a typo, not a shape: an
+// error instead of an allocation that fails.
+constexpr int MaximumCount = 250000;
+
 NurbsCurve circleCurve(const Vec3& centre, double r, bool clockwise = false)
 {
   return clockwise ? makeArc(centre, r, 2.0 * M_PI, 0.0) : makeArc(centre, r, 0.0, 2.0 * M_PI);
@@ -324,9 +328,10 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
   {
     requirePositive(s.radius, "radius", name);
     requirePositive(s.innerRadius, "innerRadius", name);
-    if (s.count < 3 || !(s.innerRadius < s.radius))
+    if (s.count < 3 || s.count > MaximumCount || !(s.innerRadius < s.radius))
     {
-      fail("shape '", name, "': needs count >= 3 and innerRadius < radius");
+      fail("shape '", name, "': needs count from 3 to ", MaximumCount, " and innerRadius < radius (got count ",
+        s.count, ")");
     }
     Vec3List corners;
     for (int k = 0; k < 2 * s.count; ++k)
@@ -340,9 +345,9 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
   else if (name == "blob")
   {
     requirePositive(s.radius, "radius", name);
-    if (s.count < 2)
+    if (s.count < 2 || s.count > MaximumCount)
     {
-      fail("shape '", name, "': count (lobes) must be >= 2");
+      fail("shape '", name, "': count (lobes) must be from 2 to ", MaximumCount, " (got ", s.count, ")");
     }
     shape.curves = { periodicBlob(Vec3::Zero(), s.radius, 0.3, s.count, 4 * s.count) };
   }
