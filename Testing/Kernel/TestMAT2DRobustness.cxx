@@ -233,7 +233,7 @@ TEST(MAT2DRobustness, RandomDomains)
 {
   const char* env = std::getenv("EXACTMAT_RANDOM_SHAPES");
   const int count = env ? std::atoi(env) : 200;
-  constexpr int KnownFailures = 41; // of the first 200 of seed 20261122
+  constexpr int KnownFailures = 14; // of the first 200 of seed 20261122
   RandomEngine rng(20261122);
   int failures = 0;
   for (int i = 0; i < count; ++i)
@@ -249,5 +249,7 @@ TEST(MAT2DRobustness, RandomDomains)
   }
   std::printf("%d of %d random domains not verified\n", failures, count);
   if (count == 200)
+  {
     EXPECT_LE(failures, KnownFailures);
+  }
 }

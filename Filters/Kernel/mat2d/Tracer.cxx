@@ -4,6 +4,7 @@
 #include "mat2d/Bisector.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <deque>
 #include <unordered_map>
@@ -58,6 +59,15 @@ public:
   }
 
   size_t mark() const { return Log.size(); }
+#ifdef EXACTMAT_TRACE_DEBUG
+  void dump(int g) const
+  {
+    std::fprintf(stderr, "  coverage of g%d:", g);
+    for (const auto& [lo, hi] : Intervals[g])
+      std::fprintf(stderr, " [%.12g, %.12g]", lo, hi);
+    std::fprintf(stderr, "\n");
+  }
+#endif
   void undo(size_t to)
   {
     while (Log.size() > to)
@@ -443,6 +453,10 @@ void Tracer::trace(const Pending& p)
   const MedialNode& start = Graph.nodes[p.node];
   Front a{ p.a.g, p.a.s }, b{ p.b.g, p.b.s };
   BisectorState y{ a.s, b.s, start.sample.radius };
+#ifdef EXACTMAT_TRACE_DEBUG
+  std::fprintf(stderr, "trace from node %d (%.12g %.12g r %.12g): a g%d s%.12g  b g%d s%.12g\n", p.node,
+    start.sample.x.x(), start.sample.x.y(), start.sample.radius, a.g, a.s, b.g, b.s);
+#endif
   auto sampleOf = [&](const Vec2& x, double r) {
     MedialSample s;
     s.x = x;
@@ -687,6 +701,11 @@ void Tracer::trace(const Pending& p)
       }
       ok = ok && y1.sa >= a.s - 1e-9 && y1.sb <= b.s + 1e-9 && y1.sa <= 1.0 + ParamEps &&
         y1.sb >= -ParamEps && y1.r >= 0.0;
+      // When a front had to be held at its generator's end instead, the step lands there,
+      // short of the boundary traced before: it is no join (the fronts move on).
+      if (joining)
+        joining = (!std::isnan(hitA) && y1.sa >= hitA - ParamEps) ||
+          (!std::isnan(hitB) && y1.sb <= hitB + ParamEps);
       if (ok && closing)
       {
         // Do not step past the LMPC: the segment ends at its centre.
@@ -864,6 +883,12 @@ void Tracer::trace(const Pending& p)
       {
         // Reached boundary traced before: this point is a node of the graph already.
         const int id = findNode(x1, 1e-6 * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+        std::fprintf(stderr, "  join at (%.12g %.12g) r %.12g fixed %d a g%d s%.12g b g%d s%.12g -> node %d\n",
+          x1.x(), x1.y(), y1.r, fixed, a.g, y1.sa, b.g, y1.sb, id);
+        if (id < 0)
+          Cover.dump(a.g), Cover.dump(b.g);
+#endif
         if (id < 0)
         {
           fail("2D MAT: the segment of generators ", a.g, " and ", b.g, " reached traced boundary at ",
@@ -883,6 +908,11 @@ void Tracer::trace(const Pending& p)
     }
   }
   seg.endNode = endNode;
+#ifdef EXACTMAT_TRACE_DEBUG
+  std::fprintf(stderr, "  ended at node %d (%.12g %.12g) type %d, %zu samples\n", endNode,
+    Graph.nodes[endNode].sample.x.x(), Graph.nodes[endNode].sample.x.y(),
+    static_cast<int>(Graph.nodes[endNode].type), seg.samples.size());
+#endif
   if (endNode == seg.startNode)
   {
     // A sliver that leaves a node of degree k ≥ 4 and comes straight back (its branch
