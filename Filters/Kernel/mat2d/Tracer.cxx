@@ -21,7 +21,7 @@ constexpr double ParamEps = 1e-12;
 /// point's footpoints were polished, to rounding): further than that slop, closer than a
 /// cluster of branch points split by a 1e-8 perturbation, whose short segments must be
 /// traced, not skipped as covered.
-constexpr double CoverageSlop = 1e-9;
+constexpr double CoverageSlop = 1e-11;
 
 struct Pending
 {
@@ -168,6 +168,7 @@ public:
     : G(g)
     , O(o)
     , L(g.size2D())
+    , InputRounding(64.0 * g.boundary().userFrame().inputRounding())
     , Cover(g.size())
   {
   }
@@ -185,6 +186,12 @@ private:
   int addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps);
   int findNode(const Vec2& x, double tol) const;
   void spawnWedges(int node);
+  /// The node's wedges: pairs of angularly consecutive footpoints (front a, front b).
+  std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedgesOf(int node) const;
+  /// Whether a pending segment is still a wedge of its node (footpoints merged into a
+  /// node later can split a wedge in two).
+  bool isWedgeOf(const Pending& p) const;
+  void mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints);
   void trace(const Pending& p);
   bool emptyDisk(const Vec2& x, double r) const;
   bool curvatureOk(int g, double s, double r) const;
@@ -209,6 +216,7 @@ private:
   const Generators& G;
   const MAT2DOptions& O;
   const double L;
+  const double InputRounding; ///< how far the input's coordinates are known, / size
   Coverage Cover;
   MedialGraph Graph;
   /// Nodes by grid cell (cells of NodeCell·L), so finding a node near a point is O(1).
@@ -231,7 +239,11 @@ BoundaryLocation Tracer::location(int g, double s) const
 
 bool Tracer::emptyDisk(const Vec2& x, double r) const
 {
-  return !G.anyCloserThan(x, r - (1e-10 * L + 1e-9 * r));
+  // Tight: a cluster of branch points 1e-9 apart must not be stepped through; the
+  // fronts' own footpoints are solved to 1e-13 of the size, well inside this. Input far
+  // from the origin is known to fewer digits (pieces meet only to its rounding): no
+  // margin below that.
+  return !G.anyCloserThan(x, r - ((1e-11 + InputRounding) * L + 1e-11 * r));
 }
 
 bool Tracer::curvatureOk(int g, double s, double r) const
@@ -343,12 +355,11 @@ void Tracer::absorbContinuum(int node)
     n.type = MedialPointType::CurvatureCentreEnd;
 }
 
-void Tracer::spawnWedges(int node)
+std::vector<std::pair<BoundaryLocation, BoundaryLocation>> Tracer::wedgesOf(int node) const
 {
-  absorbContinuum(node);
-  // One new segment per pair of angularly consecutive footpoints (counter-clockwise around
+  // One segment per pair of angularly consecutive footpoints (counter-clockwise around
   // the MAT point: moving forward along the boundary turns the contact point that way).
-  MedialNode& n = Graph.nodes[node];
+  const MedialNode& n = Graph.nodes[node];
   std::vector<BoundaryLocation> f = n.footpoints;
   const Vec2 x = n.sample.x;
   std::sort(f.begin(), f.end(), [&](const BoundaryLocation& a, const BoundaryLocation& b) {
@@ -357,16 +368,57 @@ void Tracer::spawnWedges(int node)
     const double ab = (db.norm() > 0 ? std::atan2(db.y(), db.x()) : std::atan2(-b.normal.y(), -b.normal.x()));
     return aa < ab;
   });
+  std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedges;
   for (size_t i = 0; i < f.size(); ++i)
+    wedges.push_back({ normalised(f[i], +1), normalised(f[(i + 1) % f.size()], -1) });
+  return wedges;
+}
+
+bool Tracer::isWedgeOf(const Pending& p) const
+{
+  auto same = [](const BoundaryLocation& u, const BoundaryLocation& v) {
+    return u.g == v.g && std::abs(u.s - v.s) <= ParamEps;
+  };
+  for (const auto& [a, b] : wedgesOf(p.node))
+    if (same(a, p.a) && same(b, p.b))
+      return true;
+  return false;
+}
+
+void Tracer::spawnWedges(int node)
+{
+  absorbContinuum(node);
+  for (const auto& [a, b] : wedgesOf(node))
   {
-    const BoundaryLocation a = normalised(f[i], +1);
-    const BoundaryLocation b = normalised(f[(i + 1) % f.size()], -1);
     const bool aCovered = coveredAhead(a.g, a.s, +1);
     const bool bCovered = coveredAhead(b.g, b.s, -1);
     if (aCovered || bCovered)
       continue;
     Queue.push_back({ node, a, b });
   }
+}
+
+void Tracer::mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints)
+{
+  // A branch point found within NodeMerge of a node is that node: its footpoints join the
+  // node's (a node of degree k), and the wedges between them are traced.
+  MedialNode& n = Graph.nodes[node];
+  bool added = false;
+  for (const BoundaryLocation& f : footpoints)
+  {
+    const bool known = std::any_of(n.footpoints.begin(), n.footpoints.end(),
+      [&](const BoundaryLocation& o) { return (o.point - f.point).norm() <= 1e-9 * L; });
+    if (!known)
+    {
+      n.footpoints.push_back(f);
+      added = true;
+    }
+  }
+  if (!added)
+    return;
+  if (n.footpoints.size() >= 3 && n.type == MedialPointType::Normal)
+    n.type = MedialPointType::Branch;
+  spawnWedges(node);
 }
 
 bool Tracer::lmpcBetween(
@@ -825,7 +877,14 @@ void Tracer::trace(const Pending& p)
               continue;
             const Vec2 xp = B.point(yp);
             const double fromStart = (xp - x0).norm();
-            if ((xp - xg).norm() < 1e-6 * L && fromStart < bestDistance &&
+#ifdef EXACTMAT_TRACE_DEBUG
+            std::fprintf(stderr, "  polish with g%d: (%.15g %.15g) r %.15g fromStart %.3g fromXg %.3g empty %d\n", c.g,
+              xp.x(), xp.y(), yp.r, fromStart, (xp - xg).norm(),
+              (int)!G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)));
+#endif
+            // (Not the node this segment starts from: it cannot end there.)
+            const bool atStartNode = (xp - Graph.nodes[p.node].sample.x).norm() <= 1e-13 * L;
+            if ((xp - xg).norm() < 1e-6 * L && fromStart < bestDistance && !atStartNode &&
               !G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)))
             {
               best = yp;
@@ -837,7 +896,9 @@ void Tracer::trace(const Pending& p)
             yb = best;
           return found;
         };
-        bisect(1e-8 * L);
+        // Coarse, then polished; the coarse precision follows the step, so a segment
+        // shorter than 1e-8 (inside a cluster of branch points) is bisected too.
+        bisect(std::min(1e-8 * L, 1e-3 * (x1 - x0).norm()));
         if (!polish())
           bisect(1e-13 * L);
         const Vec2 xb = B.point(yb);
@@ -861,7 +922,13 @@ void Tracer::trace(const Pending& p)
           spawnWedges(id);
         }
         else
+        {
+          // The segment ends at that node, exactly where it is.
+          seg.samples.back().x = Graph.nodes[id].sample.x;
+          seg.samples.back().radius = Graph.nodes[id].sample.radius;
           finish(id);
+          mergeIntoNode(id, fps);
+        }
         accepted = true;
         break;
       }
@@ -1017,7 +1084,7 @@ MedialGraph Tracer::run()
     {
       const Pending p = Queue.front();
       Queue.pop_front();
-      if (coveredAhead(p.a.g, p.a.s, +1) || coveredAhead(p.b.g, p.b.s, -1))
+      if (coveredAhead(p.a.g, p.a.s, +1) || coveredAhead(p.b.g, p.b.s, -1) || !isWedgeOf(p))
         continue;
       trace(p);
     }
