@@ -3,6 +3,8 @@
 #include "nurbs/Bernstein.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 
 namespace exactmat
@@ -85,12 +87,14 @@ BernsteinPoly stationarityPoly(const CurvePolys& cp)
   return g;
 }
 
-// Newton polish of f(t) = (C − P)·C' = 0 from t0, kept inside [lo, hi].
+// Newton polish of f(t) = (C − P)·C' = 0 from t0, kept inside [lo, hi]. A step is taken
+// only if it does not move away from P: at a degenerate minimum (an LMPC's centre of
+// curvature: f has a triple root, f' ≈ 0) Newton would jump across the curve.
 double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, double hi)
 {
+  CurveDerivatives d = c.derivatives(t);
   for (int it = 0; it < 8; ++it)
   {
-    const CurveDerivatives d = c.derivatives(t);
     const Vec3 r = d.point - q;
     const double f = r.dot(d.d1);
     const double fp = d.d1.squaredNorm() + r.dot(d.d2);
@@ -101,10 +105,15 @@ double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, dou
     const double next = std::min(hi, std::max(lo, t - f / fp));
     if (std::abs(next - t) < 1e-16)
     {
-      t = next;
+      break;
+    }
+    const CurveDerivatives dn = c.derivatives(next);
+    if ((dn.point - q).squaredNorm() > r.squaredNorm())
+    {
       break;
     }
     t = next;
+    d = dn;
   }
   return t;
 }
@@ -159,8 +168,25 @@ struct RootFinder
   void search(const BernsteinPoly& local, double a, double b, int depth)
   {
     const int changes = local.signChanges(zero);
+#ifdef EXACTMAT_TRACE_DEBUG
+    if (std::getenv("EXACTMAT_ROOT_DEBUG"))
+    {
+      std::fprintf(stderr, "%*s[%.9g, %.9g] changes %d zero %.3g:", depth, "", a, b, changes, zero);
+      for (double v : local.c)
+        std::fprintf(stderr, " %.3g", v);
+      std::fprintf(stderr, "\n");
+    }
+#endif
     if (changes == 0)
     {
+      // Every coefficient within rounding of 0: the distance is stationary to rounding over
+      // [a, b] — a degenerate minimum, such as the triple root at an LMPC's centre of
+      // curvature, whose sign changes rounding has erased. Not seeing it would make the
+      // distance jump to a farther minimum.
+      if (local.maxAbs() <= zero)
+      {
+        classifyAt(0.5 * (a + b), b - a);
+      }
       return;
     }
     // The end values of the restricted polynomial are its first and last coefficients.

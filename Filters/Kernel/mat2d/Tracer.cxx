@@ -631,6 +631,10 @@ void Tracer::trace(const Pending& p)
     const Vec2 centre = closing ? Vec2(lmpc.point + lmpc.normal / kappa) : Vec2::Zero();
     auto endAtCentre = [&]() {
       const int id = findNode(centre, 1e-9 * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+      std::fprintf(stderr, "  end at centre (%.12g %.12g) 1/kappa %.12g lmpc g%d s%.15g existing %d, fronts a g%d s%.12g b g%d s%.12g r %.12g\n",
+        centre.x(), centre.y(), 1.0 / kappa, lmpc.g, lmpc.s, id, a.g, a.s, b.g, b.s, y.r);
+#endif
       finish(id >= 0 ? id
                      : addNode(centre, 1.0 / kappa, MedialPointType::CurvatureCentreEnd, { lmpc }));
       MedialSample s = sampleOf(centre, 1.0 / kappa);
