@@ -316,8 +316,28 @@ std::vector<CurveFootpoint> curveFootpoints(
 
 namespace
 {
+// The minimum of a quadratic in Bernstein form on [0, 1], in closed form: a straight edge's
+// squared distance. Subdividing a nearly tangent one costs up to 40 levels, and a regular
+// n-gon's centre meets n of them in every disk.
+bool quadraticNegativeSomewhere(const BernsteinPoly& h)
+{
+  const double c0 = h.c[0], c1 = h.c[1], c2 = h.c[2];
+  if (c0 < 0.0 || c2 < 0.0)
+    return true;
+  const double a = c0 - 2.0 * c1 + c2; // h'' / 2
+  if (!(a > 0.0))
+    return false; // concave or linear: the minimum is at an end (both ≥ 0)
+  const double t = (c0 - c1) / a;     // h'(t) = 0
+  if (!(t > 0.0 && t < 1.0))
+    return false;
+  const double u = 1.0 - t;
+  return c0 * u * u + 2.0 * c1 * t * u + c2 * t * t < 0.0;
+}
+
 bool negativeSomewhere(const BernsteinPoly& h, int depth)
 {
+  if (depth == 0 && h.c.size() == 3)
+    return quadraticNegativeSomewhere(h);
   const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
   if (*mn >= 0.0)
     return false; // the coefficients bound h from below
@@ -338,6 +358,16 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
   if (!(radius > 0.0) || distanceToBox(curve.boundingBox(), query) >= radius)
   {
     return false;
+  }
+  if (curve.degree() == 1)
+  {
+    // A straight edge (whatever its weights: they only re-parameterise it): the nearest
+    // point in closed form. Polygons are all edges, and a regular n-gon's centre meets n
+    // of them in every disk near it.
+    const Vec3 a = curve.startPoint(), ab = curve.endPoint() - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0.0 ? std::min(1.0, std::max(0.0, (query - a).dot(ab) / len2)) : 0.0;
+    return (a + t * ab - query).squaredNorm() < radius * radius;
   }
   const CurvePolys cp = curvePolys(curve, query);
   BernsteinPoly h = cp.d[0] * cp.d[0] + cp.d[1] * cp.d[1] + cp.d[2] * cp.d[2];

@@ -159,22 +159,7 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
   const auto& edges = Boundary->edges();
   const double merge = 1e-9 * size2D();
   std::vector<BoundaryLocation> out;
-  auto addUnique = [&](const BoundaryLocation& b) {
-    for (BoundaryLocation& o : out)
-    {
-      if ((o.point - b.point).norm() <= merge)
-      {
-        // A corner generator describes a minimum at a reflex vertex better than an
-        // edge's end does (it carries the normal towards x).
-        if (List[b.g].kind == GeneratorKind::ReflexCorner)
-        {
-          o = b;
-        }
-        return;
-      }
-    }
-    out.push_back(b);
-  };
+  auto addUnique = [&](const BoundaryLocation& b) { out.push_back(b); };
   for (int c : ReflexCorners)
   {
     const Generator& g = List[c];
@@ -220,7 +205,39 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
       addUnique({ g, f.t, gp.p, gp.n, f.continuum });
     }
   }
-  return out;
+  // Merge footpoints that coincide (a minimum at an edge's end belongs to the corner or
+  // vertex there; a corner generator describes it best, carrying the normal towards x).
+  // Coinciding points have the same direction from x: sorted by angle they are
+  // neighbours, so merging is O(k log k) — a regular n-gon's centre has n footpoints.
+  auto angle = [&](const BoundaryLocation& b) {
+    const Vec2 d = b.point - x;
+    return d.norm() > 0.0 ? std::atan2(d.y(), d.x()) : std::atan2(-b.normal.y(), -b.normal.x());
+  };
+  std::vector<std::pair<double, BoundaryLocation>> sorted;
+  sorted.reserve(out.size());
+  for (const BoundaryLocation& b : out)
+    sorted.push_back({ angle(b), b });
+  std::sort(sorted.begin(), sorted.end(),
+    [](const auto& u, const auto& v) { return u.first < v.first; });
+  std::vector<BoundaryLocation> merged;
+  for (const auto& [a, b] : sorted)
+  {
+    if (!merged.empty() && (merged.back().point - b.point).norm() <= merge)
+    {
+      if (List[b.g].kind == GeneratorKind::ReflexCorner)
+        merged.back() = b;
+      continue;
+    }
+    merged.push_back(b);
+  }
+  // The angle wraps around: the last may coincide with the first.
+  if (merged.size() > 1 && (merged.back().point - merged.front().point).norm() <= merge)
+  {
+    if (List[merged.back().g].kind == GeneratorKind::ReflexCorner)
+      merged.front() = merged.back();
+    merged.pop_back();
+  }
+  return merged;
 }
 
 } // namespace exactmat

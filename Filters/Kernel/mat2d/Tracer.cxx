@@ -190,7 +190,13 @@ private:
   std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedgesOf(int node) const;
   /// Whether a pending segment is still a wedge of its node (footpoints merged into a
   /// node later can split a wedge in two).
-  bool isWedgeOf(const Pending& p) const;
+  bool isWedgeOf(const Pending& p);
+  struct CachedWedges
+  {
+    bool valid = false;
+    std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedges;
+  };
+  std::vector<CachedWedges> WedgeCache;
   void mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints);
   void trace(const Pending& p);
   bool emptyDisk(const Vec2& x, double r) const;
@@ -374,12 +380,21 @@ std::vector<std::pair<BoundaryLocation, BoundaryLocation>> Tracer::wedgesOf(int 
   return wedges;
 }
 
-bool Tracer::isWedgeOf(const Pending& p) const
+bool Tracer::isWedgeOf(const Pending& p)
 {
   auto same = [](const BoundaryLocation& u, const BoundaryLocation& v) {
     return u.g == v.g && std::abs(u.s - v.s) <= ParamEps;
   };
-  for (const auto& [a, b] : wedgesOf(p.node))
+  // A node's wedges change only when footpoints merge into it: cache them.
+  if (WedgeCache.size() < Graph.nodes.size())
+    WedgeCache.resize(Graph.nodes.size());
+  auto& cached = WedgeCache[p.node];
+  if (!cached.valid)
+  {
+    cached.wedges = wedgesOf(p.node);
+    cached.valid = true;
+  }
+  for (const auto& [a, b] : cached.wedges)
     if (same(a, p.a) && same(b, p.b))
       return true;
   return false;
@@ -403,19 +418,32 @@ void Tracer::mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpo
   // A branch point found within NodeMerge of a node is that node: its footpoints join the
   // node's (a node of degree k), and the wedges between them are traced.
   MedialNode& n = Graph.nodes[node];
+  // Known: a footpoint on the same generator, or at the same place on a neighbour (an
+  // edge's end and the corner or edge beyond it). O(k) per call: a regular n-gon's centre
+  // is reached by n segments with n footpoints each.
+  std::unordered_map<int, Vec2> known;
+  for (const BoundaryLocation& o : n.footpoints)
+    known.emplace(o.g, o.point);
   bool added = false;
   for (const BoundaryLocation& f : footpoints)
   {
-    const bool known = std::any_of(n.footpoints.begin(), n.footpoints.end(),
-      [&](const BoundaryLocation& o) { return (o.point - f.point).norm() <= 1e-9 * L; });
-    if (!known)
+    bool isKnown = known.count(f.g) > 0;
+    for (int neighbour : { G[f.g].prev, G[f.g].next })
+    {
+      const auto it = known.find(neighbour);
+      isKnown = isKnown || (it != known.end() && (it->second - f.point).norm() <= 1e-9 * L);
+    }
+    if (!isKnown)
     {
       n.footpoints.push_back(f);
+      known.emplace(f.g, f.point);
       added = true;
     }
   }
   if (!added)
     return;
+  if (node < static_cast<int>(WedgeCache.size()))
+    WedgeCache[node].valid = false;
   if (n.footpoints.size() >= 3 && n.type == MedialPointType::Normal)
     n.type = MedialPointType::Branch;
   spawnWedges(node);
@@ -863,6 +891,29 @@ void Tracer::trace(const Pending& p)
         // closer than the bisection's precision (a regular polygon with a vertex moved by
         // 1e-6) several candidates converge, each to its own branch point, and only the
         // first one reached is on this segment's MAT.
+        // A node already found there that this pair's bisector passes through (it has
+        // footpoints on both generators, ahead of both fronts) is where the segment ends:
+        // no polish, no footpoint search — a regular n-gon's centre is reached n times.
+        int knownNode = -1;
+        auto reuseNode = [&]() {
+          const int id = findNode(B.point(yb), 1e-7 * L);
+          if (id < 0 || id == p.node)
+            return false;
+          const MedialNode& n = Graph.nodes[id];
+          const BoundaryLocation *fa = nullptr, *fb = nullptr;
+          for (const BoundaryLocation& f : n.footpoints)
+          {
+            if (f.g == a.g && f.s >= y.sa - 1e-9)
+              fa = &f;
+            if (f.g == b.g && f.s <= y.sb + 1e-9)
+              fb = &f;
+          }
+          if (!fa || !fb || fa == fb)
+            return false;
+          yb = BisectorState{ fa->s, fb->s, n.sample.radius };
+          knownNode = id;
+          return true;
+        };
         auto polish = [&]() {
           const Vec2 xg = B.point(yb);
           const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-7 * L);
@@ -880,6 +931,8 @@ void Tracer::trace(const Pending& p)
               !(yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9))
               continue;
             const Vec2 xp = B.point(yp);
+            if (found && (xp - B.point(best)).norm() <= 1e-12 * L)
+              continue; // the same branch point again (a node of degree k: k candidates)
             const double fromStart = (xp - x0).norm();
 #ifdef EXACTMAT_TRACE_DEBUG
             std::fprintf(stderr, "  polish with g%d: (%.15g %.15g) r %.15g fromStart %.3g fromXg %.3g empty %d\n", c.g,
@@ -903,7 +956,7 @@ void Tracer::trace(const Pending& p)
         // Coarse, then polished; the coarse precision follows the step, so a segment
         // shorter than 1e-8 (inside a cluster of branch points) is bisected too.
         bisect(std::min(1e-8 * L, 1e-3 * (x1 - x0).norm()));
-        if (!polish())
+        if (!reuseNode() && !polish())
           bisect(1e-13 * L);
         const Vec2 xb = B.point(yb);
         a.s = yb.sa;
@@ -914,6 +967,14 @@ void Tracer::trace(const Pending& p)
         seg.samples.push_back(sampleOf(xb, yb.r));
         // The node is exact to rounding: footpoints farther than that belong to another
         // branch point of a cluster (reached along one of this node's own segments).
+        if (knownNode >= 0)
+        {
+          seg.samples.back().x = Graph.nodes[knownNode].sample.x;
+          seg.samples.back().radius = Graph.nodes[knownNode].sample.radius;
+          finish(knownNode);
+          accepted = true;
+          break;
+        }
         const double reach = yb.r * (1.0 + 1e-10) + 1e-11 * L;
         std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, reach);
         // Distinct branch points of a cluster may lie 1e-8 apart: only points closer than
