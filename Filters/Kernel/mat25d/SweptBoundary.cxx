@@ -133,7 +133,13 @@ std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, do
   std::sort(minima.begin(), minima.end(),
     [](const Minimum& a, const Minimum& b) { return a.distance < b.distance; });
   std::vector<Contact> out;
-  const double merge = 1e-7 * Size;
+  if (minima.empty())
+    return out;
+  // Distinctness is relative to the ball, not the solid: a ball of radius 1e-12 in a
+  // sheet 1e-12 thin (or of radius 1 in a bar 1e12 long) touches points that are
+  // distinct at its own scale.
+  const double scale = std::min(Size, std::max(minima.front().distance, 1e-300));
+  const double merge = 1e-7 * scale;
   for (const Minimum& m : minima)
   {
     bool keep = true;
@@ -141,7 +147,7 @@ std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, do
     {
       // A border minimum with a nearer minimum next to it (on the neighbouring patch) is
       // only the border of that patch, not a touchpoint of the solid.
-      if (m.oneSided && other.distance < m.distance - 1e-13 * Size &&
+      if (m.oneSided && other.distance < m.distance - 1e-13 * scale &&
         (other.point - m.point).norm() < 0.05 * std::max(m.distance, merge))
       {
         keep = false;
@@ -149,7 +155,7 @@ std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, do
     }
     // The valley test uses the ball's own radius (the nearest minimum), not the counting
     // tolerance: near an osculating point two true touchpoints are only a hair apart.
-    const double valley = minima.front().distance + 1e-12 * Size;
+    const double valley = minima.front().distance + 1e-12 * scale;
     for (const Contact& q : out)
       keep = keep && !sameContact(x, valley, q.point, m.point, merge);
     if (keep)

@@ -33,7 +33,7 @@ MAT25DVerification verifyMAT25D(
       continue;
     ++v.contactsChecked;
     const int count = static_cast<int>(
-      boundary.touchpoints(p.x, p.radius * (1.0 + 1e-9) + 1e-9 * size).size());
+      boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + 1e-15 * size).size());
     if (count != p.contacts)
     {
       if (v.contactMismatches++ == 0)

@@ -35,7 +35,9 @@ struct MAT25DVerification
 
 /// Checks every point of the curves (junctions, seams, seam ends, skeletal edges, centre
 /// curves) and every `sheetStride`-th sheet point (1 = all; radius-0 points on the
-/// solid's edges count as sheet points). Touchpoints count within r·(1 + 1e-9) + 1e-9·size.
+/// solid's edges count as sheet points). Touchpoints count within r·(1 + 2e-9) + 1e-15·size: relative to the ball, so
+/// balls far smaller or larger than the solid (a 1e-12 thin sheet, a 1e12 long bar) are
+/// counted at their own scale.
 MAT25DVerification verifyMAT25D(
   const SweptBoundary& boundary, const MedialComplex& mat, int sheetStride = 1);
 
