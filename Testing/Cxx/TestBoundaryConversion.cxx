@@ -204,3 +204,69 @@ TEST(BoundaryConversion, BadCellsAreNamed)
     << errorOf(tet, false);
   EXPECT_NE(errorOf(tet, true).find("is not a boundary surface"), std::string::npos);
 }
+
+// Hostile grids (files are data from outside): every point id and array length is checked
+// before use — under the sanitizers these read nothing past an array's end — and the error
+// names the cell, the id or the array.
+TEST(BoundaryConversion, HostileGridsAreCheckedBeforeUse)
+{
+  auto square = [](vtkIdType badId, int weightCount, int degreeCount, bool points) {
+    vtkNew<vtkUnstructuredGrid> g;
+    if (points)
+    {
+      vtkNew<vtkPoints> p;
+      p->InsertNextPoint(0, 0, 0);
+      p->InsertNextPoint(1, 0, 0);
+      p->InsertNextPoint(1, 1, 0);
+      p->InsertNextPoint(0, 1, 0);
+      g->SetPoints(p);
+    }
+    for (vtkIdType i = 0; i < 4; ++i)
+    {
+      const vtkIdType ids[2] = { i, i == 2 && badId != 0 ? badId : (i + 1) % 4 };
+      g->InsertNextCell(VTK_BEZIER_CURVE, 2, ids);
+    }
+    if (weightCount >= 0)
+    {
+      vtkNew<vtkDoubleArray> w;
+      w->SetName(arrays::RationalWeights);
+      for (int i = 0; i < weightCount; ++i)
+        w->InsertNextValue(1.0);
+      g->GetPointData()->AddArray(w);
+    }
+    if (degreeCount >= 0)
+    {
+      vtkNew<vtkDoubleArray> d;
+      d->SetName(arrays::HigherOrderDegrees);
+      d->SetNumberOfComponents(3);
+      for (int i = 0; i < degreeCount; ++i)
+        d->InsertNextTuple3(1, 0, 0);
+      g->GetCellData()->AddArray(d);
+    }
+    return vtkSmartPointer<vtkUnstructuredGrid>(g);
+  };
+  auto expectError = [](vtkUnstructuredGrid* g, const std::string& message) {
+    try
+    {
+      curvePiecesFromGrid(g);
+      ADD_FAILURE() << "no error, expected '" << message << "'";
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  };
+  EXPECT_EQ(curvePiecesFromGrid(square(0, 4, 4, true)).size(), 4u);
+  expectError(square(7, -1, -1, true), "point id 7");
+  expectError(square(-3, -1, -1, true), "point id -3");
+  expectError(square(1000000000, -1, -1, true), "point id 1000000000");
+  expectError(square(0, 2, -1, true), "RationalWeights has 2 values for 4 points");
+  expectError(square(0, -1, 1, true), "HigherOrderDegrees has 1 values for 4 cells");
+  expectError(square(0, -1, -1, false), "no points");
+  // A degree that does not fit in an int must not wrap around to a small one.
+  vtkSmartPointer<vtkUnstructuredGrid> huge = square(0, -1, 4, true);
+  huge->GetCellData()->GetArray(arrays::HigherOrderDegrees)->SetComponent(1, 0, 4294967297.0);
+  expectError(huge, "degree 4294967297");
+  huge->GetCellData()->GetArray(arrays::HigherOrderDegrees)->SetComponent(1, 0, 1.5);
+  expectError(huge, "degree 1.5");
+}
