@@ -1102,8 +1102,30 @@ void Tracer::startAt(int g, double s)
     }
     r = next;
   }
+  // The iteration may stop short (no second footpoint found where rounding hides it, a
+  // near-circle): make sure the disk is empty. Disks touching at p are nested, so
+  // emptiness is monotone in r and bisection finds the maximal one.
+  auto emptyAt = [&](double rr) {
+    return !G.anyCloserThan(p.p + rr * p.n, rr * (1.0 - 1e-12) - 1e-13 * L);
+  };
+  if (!emptyAt(r))
+  {
+    double lo = 0.0, hi = r;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * L; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (emptyAt(mid) ? lo : hi) = mid;
+    }
+    r = lo;
+  }
   x = p.p + r * p.n;
   std::vector<BoundaryLocation> fps = G.footpointsWithin(x, r * (1.0 + 1e-7) + 1e-9 * L);
+  if (fps.size() < 2 && !(fps.size() == 1 && fps.front().continuum))
+  {
+    fail("2D MAT: the maximal disk touching ", G[g].kind == GeneratorKind::Edge ? "edge " : "corner ",
+      g, " at ", G.describe(p.p), " touches the boundary only there (", fps.size(),
+      " footpoint); no segment can start from it");
+  }
   const bool circle = std::all_of(fps.begin(), fps.end(), [](const BoundaryLocation& f) { return f.continuum; });
   if (circle && !fps.empty())
   {
