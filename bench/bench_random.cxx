@@ -79,9 +79,11 @@ int main(int argc, char* argv[])
       const Generators g(b);
       const MedialGraph graph = computeMAT2D(g);
       const MAT2DVerification v = verifyMAT2D(g, graph);
-      t.worstError = std::max(t.worstError, v.maxDistanceError);
       if (v.ok(1e-9))
+      {
         ++t.verified;
+        t.worstError = std::max(t.worstError, v.maxDistanceError);
+      }
       else
       {
         ++t.flagged;

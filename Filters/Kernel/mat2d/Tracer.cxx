@@ -585,6 +585,33 @@ void Tracer::trace(const Pending& p)
     endNode = node;
   };
 
+  // A smooth junction is smooth to the angular tolerance only (a circle moved to 1e7 × its
+  // size has corners of 1e-9 rad between its arcs): the state of a front just moved onto
+  // the next generator is on the new bisector to that angle only. Solve it again with that
+  // front held at its start; where that would send the other front back (a junction
+  // convex by a hair) hold the other front instead. What the jump skips is covered.
+  auto resync = [&](int switched) {
+    const Bisector Bs(G, a.g, b.g);
+    const Vec2 before = Bs.point(y);
+    for (const int held : { switched, 1 - switched })
+    {
+      BisectorState t = y;
+      const bool solved = Bs.correct(t, held, 1e-13 * L);
+      if (!solved || (Bs.point(t) - before).norm() > 1e-6 * L)
+        continue;
+      // A front that would pass its own generator's end stops there (and moves on next).
+      t.sa = std::min(t.sa, 1.0);
+      t.sb = std::max(t.sb, 0.0);
+      if (!(t.sa >= a.s && t.sb <= b.s))
+        continue;
+      a.interval = Cover.cover(a.g, a.s, t.sa, a.interval);
+      b.interval = Cover.cover(b.g, t.sb, b.s, b.interval);
+      a.s = t.sa;
+      b.s = t.sb;
+      y = t;
+      return;
+    }
+  };
   for (int iteration = 0; endNode < 0; ++iteration)
   {
     if (iteration > O.maxSamplesPerSegment)
@@ -607,6 +634,7 @@ void Tracer::trace(const Pending& p)
       }
       a = Front{ G[a.g].next, 0.0 };
       y.sa = 0.0;
+      resync(0);
     }
     if (b.s <= ParamEps)
     {
@@ -621,6 +649,7 @@ void Tracer::trace(const Pending& p)
       }
       b = Front{ G[b.g].prev, 1.0 };
       y.sb = 1.0;
+      resync(1);
     }
     const Bisector B(G, a.g, b.g);
     const Vec2 x0 = B.point(y);
@@ -827,6 +856,9 @@ void Tracer::trace(const Pending& p)
       }
       if (!ok)
       {
+#ifdef EXACTMAT_TRACE_DEBUG
+        std::fprintf(stderr, "   reject h %.3g resize %.3g fixed %d y1 %.15g %.15g %.15g closing %d joining %d\n", h, resize, fixed, y1.sa, y1.sb, y1.r, (int)closing, (int)joining);
+#endif
         h *= std::min(resize, 0.5);
         if (h < 1e-14 * L)
         {
