@@ -946,9 +946,9 @@ void Tracer::trace(const Pending& p)
           knownNode = id;
           return true;
         };
-        auto polish = [&]() {
+        auto polish = [&](double window) {
           const Vec2 xg = B.point(yb);
-          const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + 1e-7 * L);
+          const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + (window > 1e-6 * L ? window : 1e-7 * L));
           const GeneratorPoint fa = G.evaluate(a.g, yb.sa), fb = G.evaluate(b.g, yb.sb);
           bool found = false;
           BisectorState best = yb;
@@ -973,7 +973,7 @@ void Tracer::trace(const Pending& p)
 #endif
             // (Not the node this segment starts from: it cannot end there.)
             const bool atStartNode = (xp - Graph.nodes[p.node].sample.x).norm() <= 1e-13 * L;
-            if ((xp - xg).norm() < 1e-6 * L && fromStart < bestDistance && !atStartNode &&
+            if ((xp - xg).norm() < window && fromStart < bestDistance && !atStartNode &&
               !G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)))
             {
               best = yp;
@@ -988,7 +988,12 @@ void Tracer::trace(const Pending& p)
         // Coarse, then polished; the coarse precision follows the step, so a segment
         // shorter than 1e-8 (inside a cluster of branch points) is bisected too.
         bisect(std::min(1e-8 * L, 1e-3 * (x1 - x0).norm()));
-        if (!reuseNode() && !polish())
+        // The bisection's disk test has a margin (no less than the input's rounding):
+        // where the third generator meets the segment at a grazing angle θ (next to an
+        // almost flat convex vertex) it places the branch point up to margin / θ past the
+        // true one, anywhere back to the last valid point: polish near first, then there.
+        const double wide = 1.01 * (B.point(yb) - x0).norm();
+        if (!reuseNode() && !polish(1e-6 * L) && !(wide > 1e-6 * L && polish(wide)))
           bisect(1e-13 * L);
         const Vec2 xb = B.point(yb);
         a.s = yb.sa;
