@@ -9,6 +9,7 @@
 #include <deque>
 #include <unordered_map>
 #include <limits>
+#include <numeric>
 
 namespace exactmat
 {
@@ -211,6 +212,8 @@ private:
   /// their generators and make the node an end at a centre of curvature.
   void absorbContinuum(int node);
   void reportProgress();
+  /// Joins components of the graph closer than ClusterReach (see the definition).
+  void joinClusters();
   /// The boundary location `distance` (in parameter) ahead of (g, s) in direction dir,
   /// crossing smooth and reflex junctions; false when a convex vertex is in the way.
   bool stepAlong(int& g, double& s, int dir, double distance) const;
@@ -231,6 +234,11 @@ private:
   /// Branch points closer than this fraction of the size are one node (a node of degree
   /// k ≥ 4): merging them moves a point by less than the verification's 1e-9.
   static constexpr double NodeMerge = 5e-10;
+  /// Branch points of a cluster (a node of degree k ≥ 4 split by the input's rounding)
+  /// lie up to ~1e-8 of the size apart; segments joining one another there end at the
+  /// node they reach within 1e-6, so a cluster can come out in pieces. Pieces closer than
+  /// this are one node of degree k (the issue allows either form).
+  static constexpr double ClusterReach = 1e-7;
   long long cellKey(long long i, long long j) const { return i * 73856093LL ^ j * 19349663LL; }
   int SegmentsSinceProgress = 0;
   std::deque<Pending> Queue;
@@ -1186,6 +1194,107 @@ void Tracer::reportProgress()
   O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
 }
 
+void Tracer::joinClusters()
+{
+  const int domains = static_cast<int>(G.boundary().loops().size()) - G.boundary().holeCount();
+  const int n = static_cast<int>(Graph.nodes.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int k) {
+    while (parent[k] != k)
+      k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  int components = n;
+  auto unite = [&](int i, int j) {
+    i = find(i);
+    j = find(j);
+    if (i != j)
+    {
+      parent[i] = j;
+      --components;
+    }
+  };
+  for (const MedialSegment& s : Graph.segments)
+    unite(s.startNode, s.endNode);
+  if (components <= domains)
+    return;
+  // Pairs of nodes (with radius: not ends at convex vertices) within reach, nearest first.
+  std::vector<int> order;
+  for (int k = 0; k < n; ++k)
+    if (Graph.nodes[k].sample.radius > 0.0)
+      order.push_back(k);
+  std::sort(order.begin(), order.end(),
+    [&](int i, int j) { return Graph.nodes[i].sample.x.x() < Graph.nodes[j].sample.x.x(); });
+  const double reach = ClusterReach * L;
+  std::vector<std::tuple<double, int, int>> pairs;
+  for (size_t u = 0; u < order.size(); ++u)
+  {
+    const Vec2& xu = Graph.nodes[order[u]].sample.x;
+    for (size_t w = u + 1; w < order.size() && Graph.nodes[order[w]].sample.x.x() - xu.x() <= reach; ++w)
+    {
+      const double d = (Graph.nodes[order[w]].sample.x - xu).norm();
+      if (d <= reach && find(order[u]) != find(order[w]))
+        pairs.emplace_back(d, order[u], order[w]);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  std::vector<int> into(n);
+  std::iota(into.begin(), into.end(), 0);
+  for (const auto& [d, i, j] : pairs)
+  {
+    if (components <= domains)
+      break;
+    if (find(i) == find(j) || into[i] != i || into[j] != j)
+      continue;
+    // j becomes i: its segments end at i exactly, its footpoints join i's.
+    MedialNode& keep = Graph.nodes[i];
+    for (const int sid : Graph.nodes[j].segments)
+    {
+      MedialSegment& s = Graph.segments[sid];
+      for (const bool atStart : { true, false })
+      {
+        if ((atStart ? s.startNode : s.endNode) != j)
+          continue;
+        (atStart ? s.startNode : s.endNode) = i;
+        MedialSample& end = atStart ? s.samples.front() : s.samples.back();
+        end.x = keep.sample.x;
+        end.radius = keep.sample.radius;
+      }
+      keep.segments.push_back(sid);
+    }
+    for (const BoundaryLocation& f : Graph.nodes[j].footpoints)
+    {
+      if (std::none_of(keep.footpoints.begin(), keep.footpoints.end(),
+            [&](const BoundaryLocation& o) { return o.g == f.g; }))
+        keep.footpoints.push_back(f);
+    }
+    if (keep.footpoints.size() >= 3)
+      keep.type = MedialPointType::Branch;
+    Graph.nodes[j].segments.clear();
+    into[j] = i;
+    unite(i, j);
+  }
+  // Remove the nodes merged away and renumber.
+  std::vector<int> renumber(n, -1);
+  std::vector<MedialNode> kept;
+  for (int k = 0; k < n; ++k)
+  {
+    if (into[k] != k)
+      continue;
+    renumber[k] = static_cast<int>(kept.size());
+    kept.push_back(std::move(Graph.nodes[k]));
+  }
+  if (kept.size() == Graph.nodes.size())
+    return;
+  Graph.nodes = std::move(kept);
+  for (MedialSegment& s : Graph.segments)
+  {
+    s.startNode = renumber[s.startNode];
+    s.endNode = renumber[s.endNode];
+  }
+}
+
 MedialGraph Tracer::run()
 {
   TotalMeasure = std::max(1.0, static_cast<double>(G.size()));
@@ -1235,6 +1344,7 @@ MedialGraph Tracer::run()
   }
   if (O.progress)
     O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
+  joinClusters();
   Graph.mergeJoints();
   return std::move(Graph);
 }
