@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -245,15 +246,14 @@ TEST(MAT2DRobustness, SawToothStripWithCloseTeeth)
 }
 
 // Seeded random domains (star polygons, jittered regular polygons, saw-tooth strips,
-// rational blobs with holes), each randomly moved, scaled and reweighted. Every one must
-// be verified; today some jittered clusters and dense star polygons are not (the
-// verification flags them: never silently wrong). This ratchet holds the count where it
-// is and lists them; exactmat_bench_random measures the rates over thousands.
+// rational blobs with holes), each randomly moved, scaled and reweighted: every one of the
+// first 300 of this seed is verified. Over thousands about 1 % are still refused or flagged
+// (never silently wrong); exactmat_bench_random measures the rates, and
+// EXACTMAT_RANDOM_SHAPES=N runs more here (listing, not failing on, the ones not verified).
 TEST(MAT2DRobustness, RandomDomains)
 {
   const char* env = std::getenv("EXACTMAT_RANDOM_SHAPES");
-  const int count = env ? std::atoi(env) : 200;
-  constexpr int KnownFailures = 6; // of the first 200 of seed 20261122
+  const int count = env ? std::atoi(env) : 300;
   RandomEngine rng(20261122);
   int failures = 0;
   for (int i = 0; i < count; ++i)
@@ -268,8 +268,28 @@ TEST(MAT2DRobustness, RandomDomains)
     }
   }
   std::printf("%d of %d random domains not verified\n", failures, count);
-  if (count == 200)
+  if (!env)
   {
-    EXPECT_LE(failures, KnownFailures);
+    EXPECT_EQ(failures, 0);
+  }
+}
+
+// Findings of exactmat_bench_random (seed 1), kept: a star polygon of 293 edges moved to
+// 5e11 (a branch point met at a grazing angle next to an almost flat convex vertex, placed
+// 5e-6 of the size off by the disk test's margin), a regular 7-gon jittered by 4.4e-9
+// (a cluster of branch points that came out in two pieces), and a 6-gon and an 11-gon
+// jittered by 8e-9 and 2.7e-8.
+TEST(MAT2DRobustness, RandomFindingsStayFixed)
+{
+  const std::vector<int> findings = { 27, 71, 235, 446 };
+  RandomEngine rng(1);
+  for (int i = 0; i <= findings.back(); ++i)
+  {
+    const RandomShape s = randomDomain(rng, 300);
+    const ShapeMotion m = randomMotion(rng);
+    if (std::find(findings.begin(), findings.end(), i) == findings.end())
+      continue;
+    SCOPED_TRACE("shape " + std::to_string(i) + ": " + s.description + ", " + m.describe());
+    EXPECT_TRUE(verifiedOrRefused(m.apply(s.curves)));
   }
 }

@@ -1165,6 +1165,12 @@ void Tracer::startAt(int g, double s)
   }
   x = p.p + r * p.n;
   std::vector<BoundaryLocation> fps = G.footpointsWithin(x, r * (1.0 + 1e-7) + 1e-9 * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+  std::fprintf(stderr, "start at g%d s%.15g p (%.15g %.15g) r %.15g fps %zu:", g, s, p.p.x(), p.p.y(), r, fps.size());
+  for (const auto& f : fps)
+    std::fprintf(stderr, " g%d@%.12g%s", f.g, f.s, f.continuum ? "c" : "");
+  std::fprintf(stderr, "\n");
+#endif
   if (fps.size() < 2 && !(fps.size() == 1 && fps.front().continuum))
   {
     fail("2D MAT: the maximal disk touching ", G[g].kind == GeneratorKind::Edge ? "edge " : "corner ",
