@@ -398,7 +398,9 @@ namespace
 struct PatchPolys
 {
   BernsteinPoly2 gu, gv; ///< signs of (S − P)·Su and (S − P)·Sv
-  double zero = 0.0;
+  /// What rounding leaves of gu and gv: each has its own, as a patch 1e12 times longer
+  /// than wide (the side of a long extrusion) has derivatives 1e12 apart.
+  double zeroU = 0.0, zeroV = 0.0;
 };
 
 PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
@@ -426,7 +428,7 @@ PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
   }
   PatchPolys pp;
   const BernsteinPoly2 wu = w.derivativeU(), wv = w.derivativeV();
-  double dMax = 0.0, dpMax = 0.0;
+  double dMax = 0.0, duMax = 0.0, dvMax = 0.0;
   for (int k = 0; k < 3; ++k)
   {
     const BernsteinPoly2 du = d[k].derivativeU(), dv = d[k].derivativeV();
@@ -435,10 +437,14 @@ PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
     pp.gu = (k == 0) ? tu : pp.gu + tu;
     pp.gv = (k == 0) ? tv : pp.gv + tv;
     dMax = std::max(dMax, d[k].maxAbs());
-    dpMax = std::max({ dpMax, du.maxAbs(), dv.maxAbs() });
+    duMax = std::max(duMax, du.maxAbs());
+    dvMax = std::max(dvMax, dv.maxAbs());
   }
   const double wMax = w.maxAbs();
-  pp.zero = 1e-13 * dMax * (dpMax + dMax) * wMax * (polynomial ? 1.0 : wMax);
+  // gu = Σ d·(du·w − d·wu) (rational) or Σ d·du: rounding of each product's terms.
+  const double rational = polynomial ? 0.0 : 1.0;
+  pp.zeroU = 1e-13 * dMax * (duMax * (polynomial ? 1.0 : wMax) + rational * dMax * wu.maxAbs());
+  pp.zeroV = 1e-13 * dMax * (dvMax * (polynomial ? 1.0 : wMax) + rational * dMax * wv.maxAbs());
   return pp;
 }
 
@@ -521,11 +527,20 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
     {
       break;
     }
+    // In arc-length-like variables (u·|Su|, v·|Sv|): a patch 1e6 times longer than wide
+    // has a Hessian whose eigenvalues are 1e12 apart in (u, v), and the pseudo-inverse
+    // would drop the short direction as negligible.
+    // (Only there: elsewhere the plain step settles degenerate minima sooner.)
+    const double nu = s.su.norm(), nv = s.sv.norm();
+    const bool elongated = nu > 1e3 * nv || nv > 1e3 * nu;
+    const double ku = elongated && nu > 0.0 ? 1.0 / nu : 1.0, kv = elongated && nv > 0.0 ? 1.0 / nv : 1.0;
     double du = 0.0, dv = 0.0;
-    if (!pseudoSolve(a, b, c, fu, fv, du, dv))
+    if (!pseudoSolve(a * ku * ku, b * ku * kv, c * kv * kv, fu * ku, fv * kv, du, dv))
     {
       return false;
     }
+    du *= ku;
+    dv *= kv;
     u -= du;
     v -= dv;
     if (clampToBox)
@@ -569,7 +584,7 @@ struct PatchSearch
   const BezierPatch& patch;
   const Vec3& q;
   double maxDistance;
-  double zero;
+  double zeroU, zeroV;
   std::vector<PatchFootpoint> found;
   int boxes = 0;
 
@@ -592,7 +607,7 @@ struct PatchSearch
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
-    if (++boxes > MaxPatchBoxes || gu.hasStrictSign(zero) || gv.hasStrictSign(zero))
+    if (++boxes > MaxPatchBoxes || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
     {
       return;
     }
@@ -655,8 +670,8 @@ std::vector<PatchFootpoint> patchFootpoints(
     return result;
   }
   const PatchPolys pp = patchPolys(patch, query);
-  PatchSearch search{ patch, query, maxDistance, pp.zero, {}, 0 };
-  const bool flatU = pp.gu.maxAbs() <= pp.zero, flatV = pp.gv.maxAbs() <= pp.zero;
+  PatchSearch search{ patch, query, maxDistance, pp.zeroU, pp.zeroV, {}, 0 };
+  const bool flatU = pp.gu.maxAbs() <= pp.zeroU, flatV = pp.gv.maxAbs() <= pp.zeroV;
   if (flatU && flatV)
   {
     search.add(0.5, 0.5); // the query is a centre of the whole patch (a sphere's centre)

@@ -62,7 +62,7 @@ public:
     }
     // Sheets built strip by strip meet along footpoint normals and at nodes: one vertex
     // there, so the output is a connected complex.
-    C.weld(1e-12 * Size);
+    C.weld(1e-12 * Fine);
     return std::move(C);
   }
 
@@ -80,6 +80,9 @@ private:
     }
     const double sweepLength = W.kind() == SweepKind::Extrusion ? S : S * rhoMax;
     Size = std::max(G.size2D(), sweepLength);
+    // The smaller extent sets what is distinct: an extrusion 1e-12 long (or 1e12 long,
+    // for the profile) has points 1e-12 of the larger one apart that are not the same.
+    Fine = std::min(G.size2D(), sweepLength);
     const double h = std::max(1e-6, O.sheetResolution) * Size;
     Across = std::clamp(static_cast<int>(std::ceil(sweepLength / h)), 4, 4096);
     if (W.closed())
@@ -293,7 +296,7 @@ private:
     auto solve = [&](double w, BisectorState& y) {
       y = { start(p, 0) + w * (start(q, 0) - start(p, 0)), start(p, 1) + w * (start(q, 1) - start(p, 1)),
         p.radius + w * (q.radius - p.radius) };
-      if (!bisector.correct(y, fixed, 1e-15 * Size))
+      if (!bisector.correct(y, fixed, 1e-15 * G.size2D()))
         return std::numeric_limits<double>::quiet_NaN();
       return y.r - midRadius(bisector.point(y));
     };
@@ -309,7 +312,7 @@ private:
       const double f = solve(w, y);
       if (std::isnan(f))
         return false;
-      converged = std::abs(f) <= 1e-14 * Size || hi - lo <= 1e-15;
+      converged = std::abs(f) <= 1e-14 * Fine || hi - lo <= 1e-15;
       if ((f < 0.0) == (flo < 0.0))
       {
         lo = w;
@@ -326,7 +329,7 @@ private:
     // A solution past a generator's end belongs to the other pair (the curve beyond its
     // end is not the boundary).
     if (!converged || y.sa < 0.0 || y.sa > 1.0 || y.sb < 0.0 || y.sb > 1.0 ||
-      std::abs(y.r - midRadius(bisector.point(y))) > 1e-12 * Size)
+      std::abs(y.r - midRadius(bisector.point(y))) > 1e-12 * Fine + 1e-14 * G.size2D())
       return false;
     c.x = bisector.point(y);
     c.radius = y.r;
@@ -349,7 +352,7 @@ private:
     // Samples that repeat their predecessor or the end node (a tracer's first step can
     // land on its node) would be a second, mislabelled copy of that point. Where the
     // segment passes the mid-surface, the crossing point is inserted.
-    const double same = 1e-12 * Size;
+    const double same = 1e-12 * Fine;
     std::vector<MedialSample> samples{ seg.samples.front() };
     std::vector<Station> kind{ station(seg.samples.front().x, seg.samples.front().radius) };
     std::vector<bool> inserted{ false }; ///< crossings found between two samples
@@ -595,14 +598,14 @@ private:
     {
       const StripColumn& c = strip[i];
       std::vector<int>& ids = cols[i];
-      if (c.r <= 0.0 && (c.x - c.foot).norm() <= 1e-15 * Size)
+      if (c.r <= 0.0 && (c.x - c.foot).norm() <= 1e-15 * G.size2D())
       {
         ids.assign(Levels + 1, c.top); // a convex vertex: the column is one point
         previousFootId = -1;
         continue;
       }
       // Footpoints repeat along a reflex corner: one boundary point.
-      const bool sameFoot = previousFootId >= 0 && (c.foot - previousFoot).norm() <= 1e-15 * Size;
+      const bool sameFoot = previousFootId >= 0 && (c.foot - previousFoot).norm() <= 1e-15 * G.size2D();
       const int footId = sameFoot ? previousFootId
                                   : addPoint(W.place(c.foot, face == 0 ? 0.0 : S), 0.0,
                                       MedialPoint3DType::ConvexEdge, 0);
@@ -716,7 +719,7 @@ private:
   const SweepMap& W;
   const MAT25DOptions& O;
   const int E;
-  double S = 0.0, Size = 1.0;
+  double S = 0.0, Size = 1.0, Fine = 1.0;
   int Across = 4, Levels = 2;
   MedialComplex C;
   std::vector<std::vector<int>> NodeColumn;
