@@ -3,6 +3,7 @@
 #include "nurbs/Bernstein.h"
 
 #include <algorithm>
+#include <queue>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -532,7 +533,7 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
     // would drop the short direction as negligible.
     // (Only there: elsewhere the plain step settles degenerate minima sooner.)
     const double nu = s.su.norm(), nv = s.sv.norm();
-    const bool elongated = nu > 1e3 * nv || nv > 1e3 * nu;
+    const bool elongated = nu > 16.0 * nv || nv > 16.0 * nu;
     const double ku = elongated && nu > 0.0 ? 1.0 / nu : 1.0, kv = elongated && nv > 0.0 ? 1.0 / nv : 1.0;
     double du = 0.0, dv = 0.0;
     if (!pseudoSolve(a * ku * ku, b * ku * kv, c * kv * kv, fu * ku, fv * kv, du, dv))
@@ -661,7 +662,9 @@ struct PatchSearch
 
 } // namespace
 
-std::vector<PatchFootpoint> patchFootpoints(
+namespace
+{
+std::vector<PatchFootpoint> pieceFootpoints(
   const BezierPatch& patch, const Vec3& query, double maxDistance)
 {
   std::vector<PatchFootpoint> result;
@@ -757,9 +760,135 @@ std::vector<PatchFootpoint> patchFootpoints(
   return unique;
 }
 
+// Lengths of the control net along u and along v (the longest row / column).
+void netExtents(const BezierPatch& patch, double& lu, double& lv)
+{
+  lu = lv = 0.0;
+  for (int j = 0; j <= patch.degreeV(); ++j)
+  {
+    double l = 0.0;
+    for (int i = 0; i < patch.degreeU(); ++i)
+      l += (patch.controlPoint(i + 1, j) - patch.controlPoint(i, j)).norm();
+    lu = std::max(lu, l);
+  }
+  for (int i = 0; i <= patch.degreeU(); ++i)
+  {
+    double l = 0.0;
+    for (int j = 0; j < patch.degreeV(); ++j)
+      l += (patch.controlPoint(i, j + 1) - patch.controlPoint(i, j)).norm();
+    lv = std::max(lv, l);
+  }
+}
+
+constexpr double MaxPieceAspect = 512.0;
+constexpr int MaxPieces = 4096;
+
+// An elongated patch (the side of an extrusion 1e6 times longer than its profile) has
+// distance polynomials whose rounding, set by the far end, drowns the short direction
+// near the query: the search is run on pieces cut along the long direction until they
+// are no more elongated than MaxPieceAspect, nearest first, keeping only pieces within
+// reach (with `nearestOnly`, within the nearest distance found so far). Minima that a
+// piece finds on a cut are kept only where the whole patch is stationary there too.
+std::vector<PatchFootpoint> elongatedFootpoints(
+  const BezierPatch& patch, const Vec3& query, double maxDistance, bool nearestOnly)
+{
+  struct Piece
+  {
+    double gap, u0, u1, v0, v1;
+    bool operator<(const Piece& o) const { return gap > o.gap; } // nearest on top
+  };
+  std::priority_queue<Piece> queue;
+  queue.push({ distanceToBox(patch.boundingBox(), query), 0.0, 1.0, 0.0, 1.0 });
+  std::vector<PatchFootpoint> found;
+  for (int pieces = 0; !queue.empty() && pieces < MaxPieces;)
+  {
+    const Piece c = queue.top();
+    queue.pop();
+    if (c.gap > maxDistance)
+      break; // the rest are farther still
+    const BezierPatch sub = patch.subPatch(c.u0, c.u1, c.v0, c.v1);
+    double lu = 0.0, lv = 0.0;
+    netExtents(sub, lu, lv);
+    if (lu > MaxPieceAspect * lv || lv > MaxPieceAspect * lu)
+    {
+      const bool alongU = lu > lv;
+      const double mu = 0.5 * (c.u0 + c.u1), mv = 0.5 * (c.v0 + c.v1);
+      for (const Piece& h : { alongU ? Piece{ 0, c.u0, mu, c.v0, c.v1 } : Piece{ 0, c.u0, c.u1, c.v0, mv },
+             alongU ? Piece{ 0, mu, c.u1, c.v0, c.v1 } : Piece{ 0, c.u0, c.u1, mv, c.v1 } })
+      {
+        Piece q = h;
+        q.gap = distanceToBox(patch.subPatch(q.u0, q.u1, q.v0, q.v1).boundingBox(), query);
+        if (q.gap <= maxDistance)
+          queue.push(q);
+      }
+      continue;
+    }
+    ++pieces;
+    for (PatchFootpoint f : pieceFootpoints(sub, query, maxDistance))
+    {
+      f.u = c.u0 + f.u * (c.u1 - c.u0);
+      f.v = c.v0 + f.v * (c.v1 - c.v0);
+      if (f.onBoundary)
+      {
+        // On a cut (not the patch's own border): a minimum of the patch only if the
+        // derivative across the cut vanishes.
+        const bool cutU = (f.u > 0.0 && f.u < 1.0) && (f.u == c.u0 || f.u == c.u1);
+        const bool cutV = (f.v > 0.0 && f.v < 1.0) && (f.v == c.v0 || f.v == c.v1);
+        if (cutU || cutV)
+        {
+          const SurfaceDerivatives d = patch.derivatives(f.u, f.v);
+          const Vec3 r = d.point - query;
+          const bool stationary = (!cutU || std::abs(r.dot(d.su)) <= 1e-9 * r.norm() * d.su.norm()) &&
+            (!cutV || std::abs(r.dot(d.sv)) <= 1e-9 * r.norm() * d.sv.norm());
+          if (!stationary && !f.continuum)
+            continue;
+          const bool onBorder = f.u == 0.0 || f.u == 1.0 || f.v == 0.0 || f.v == 1.0;
+          f.onBoundary = onBorder;
+        }
+      }
+      found.push_back(f);
+      if (nearestOnly)
+        maxDistance = std::min(maxDistance, f.distance);
+    }
+  }
+  std::sort(found.begin(), found.end(),
+    [](const PatchFootpoint& a, const PatchFootpoint& b) { return a.distance < b.distance; });
+  std::vector<PatchFootpoint> unique;
+  for (const PatchFootpoint& f : found)
+  {
+    // The same minimum from the pieces on both sides of a cut: one.
+    const bool seen = std::any_of(unique.begin(), unique.end(), [&](const PatchFootpoint& g) {
+      return (f.point - g.point).norm() <= 1e-9 * (f.distance + 1e-300) ||
+        (std::abs(f.u - g.u) < 1e-12 && std::abs(f.v - g.v) < 1e-12);
+    });
+    if (!seen && f.distance <= maxDistance)
+      unique.push_back(f);
+  }
+  return unique;
+}
+
+bool elongated(const BezierPatch& patch)
+{
+  double lu = 0.0, lv = 0.0;
+  netExtents(patch, lu, lv);
+  return lu > MaxPieceAspect * lv || lv > MaxPieceAspect * lu;
+}
+} // namespace
+
+std::vector<PatchFootpoint> patchFootpoints(
+  const BezierPatch& patch, const Vec3& query, double maxDistance)
+{
+  if (distanceToBox(patch.boundingBox(), query) > maxDistance)
+    return {};
+  return elongated(patch) ? elongatedFootpoints(patch, query, maxDistance, false)
+                          : pieceFootpoints(patch, query, maxDistance);
+}
+
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)
 {
-  const std::vector<PatchFootpoint> fps = patchFootpoints(patch, query);
+  const std::vector<PatchFootpoint> fps = elongated(patch)
+    ? elongatedFootpoints(patch, query, Unbounded, true)
+    : pieceFootpoints(patch, query, Unbounded);
   if (!fps.empty())
   {
     return fps.front();
