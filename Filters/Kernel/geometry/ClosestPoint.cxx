@@ -809,7 +809,10 @@ std::vector<PatchFootpoint> elongatedFootpoints(
     const BezierPatch sub = patch.subPatch(c.u0, c.u1, c.v0, c.v1);
     double lu = 0.0, lv = 0.0;
     netExtents(sub, lu, lv);
-    if (lu > MaxPieceAspect * lv || lv > MaxPieceAspect * lu)
+    // A piece far from the query for its length is conditioned by that distance, not by
+    // its far end: cutting it finer only multiplies the pieces (a query 1e-2 from a side
+    // 1e-12 wide would visit 1e7 of them).
+    if ((lu > MaxPieceAspect * lv || lv > MaxPieceAspect * lu) && std::max(lu, lv) > 4.0 * c.gap)
     {
       const bool alongU = lu > lv;
       const double mu = 0.5 * (c.u0 + c.u1), mv = 0.5 * (c.v0 + c.v1);

@@ -20,6 +20,8 @@ SweptBoundary::SweptBoundary(const Boundary2D& profile, const SweepMap& sweep)
   }
   SideTree.build(boxes);
   Size = all.diagonal().norm();
+  const Vec3 extent = all.diagonal().cwiseAbs();
+  Aspect = extent.maxCoeff() / std::max(extent.minCoeff(), 1e-300 * extent.maxCoeff());
   boxes.clear();
   for (const Edge2D& e : profile.edges())
     boxes.push_back(e.curve.boundingBox());

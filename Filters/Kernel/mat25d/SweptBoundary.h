@@ -41,6 +41,8 @@ public:
   const std::vector<PatchPiece>& sides() const { return Sides; }
   /// Bounding-box diagonal of the solid.
   double size() const { return Size; }
+  /// The bounding box's longest edge over its shortest (a 4 × 2 plate 1e-12 thick: 4e12).
+  double aspect() const { return Aspect; }
 
   /// Distance from x to profile face `face` (0 start, 1 end) and the foot of the
   /// perpendicular, or +∞ where the face cannot be nearest (foot outside the profile,
@@ -50,6 +52,7 @@ public:
 private:
   bool sameContact(const Vec3& x, double radius, const Vec3& a, const Vec3& b, double merge) const;
 
+  double Aspect = 1.0;
   const Boundary2D* Profile;
   const SweepMap* Map;
   std::vector<PatchPiece> Sides;

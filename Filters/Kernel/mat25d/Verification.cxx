@@ -15,6 +15,7 @@ MAT25DVerification verifyMAT25D(
   const double size = boundary.size();
   const int n = static_cast<int>(mat.points.size());
   int sheetPoints = 0;
+  v.aspect = boundary.aspect();
   for (int i = 0; i < n; ++i)
   {
     const MedialPoint3D& p = mat.points[i];
@@ -29,7 +30,7 @@ MAT25DVerification verifyMAT25D(
       v.maxDistanceError = std::isnan(error) ? INFINITY : error;
       v.worstPoint = i;
     }
-    if (p.contacts <= 0)
+    if (p.contacts <= 0 || !v.contactsCounted())
       continue;
     ++v.contactsChecked;
     const int count = static_cast<int>(
@@ -54,6 +55,11 @@ std::string MAT25DVerification::problems(double distanceTolerance, const MedialC
   {
     out += "largest |distance to boundary - radius| / size " + format(maxDistanceError) +
       " > tolerance " + format(distanceTolerance) + " at " + format(toUser(mat.points[worstPoint].x));
+  }
+  if (!contactsCounted())
+  {
+    out += std::string(out.empty() ? "" : "; ") + "touchpoints not counted: the solid is " +
+      format(aspect) + " times longer than thick (counted up to " + format(MaxCountedAspect) + ")";
   }
   if (contactMismatches > 0)
   {

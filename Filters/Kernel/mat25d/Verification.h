@@ -22,10 +22,16 @@ struct MAT25DVerification
   int contactMismatches = 0;     ///< of those, how many have another count
   int firstMismatch = -1;        ///< the first such point
   int firstMismatchCount = 0;    ///< and how many touchpoints it has
+  /// The solid's longest extent over its shortest; past MaxCountedAspect the touchpoints
+  /// are not counted (the patch search cannot resolve them in bounded time) and the
+  /// verification fails, saying so.
+  double aspect = 1.0;
+  static constexpr double MaxCountedAspect = 1e8;
+  bool contactsCounted() const { return aspect <= MaxCountedAspect; }
 
   bool ok(double distanceTolerance) const
   {
-    return maxDistanceError <= distanceTolerance && contactMismatches == 0;
+    return maxDistanceError <= distanceTolerance && contactMismatches == 0 && contactsCounted();
   }
   /// What is wrong and where, in one line ("" when ok); `toUser` maps the complex's
   /// points to the frame the user sees.
