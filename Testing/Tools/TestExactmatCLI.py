@@ -157,6 +157,20 @@ class ExactmatCLI(unittest.TestCase):
                     "1e-300", "-o", os.path.join(tmp, "e.vtp"))
             self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
 
+    def test_extreme_sweeps_are_verified_or_refused_quickly(self):
+        """Bars 1e6 longer and plates 1e6 thinner than wide are verified; at 1e12 the run
+        says it could not verify (exit 3) instead of searching for minutes."""
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "e.vtp")
+            for length in ("1e6", "1e-6"):
+                r = run("extrude", "--length", length, "-o", out)
+                self.assertEqual(r.returncode, 0, length + r.stdout + r.stderr)
+            for args in (("extrude", "--length", "1e-12"), ("extrude", "--length", "1e12"),
+                         ("revolve", "--angle", "1e-9")):
+                r = run(*args, "-o", out)
+                self.assertEqual(r.returncode, 3, " ".join(args) + r.stdout + r.stderr)
+                self.assertIn("not verified: the solid is", r.stderr)
+
     def test_coordinates_and_weights_of_any_scale(self):
         """The issue's reproducers: a 4 x 1.5 rectangle at (1e5, 1e5), near 1e300, with
         weights x 1e300; a pentagon with a vertex moved by 2e-6 (a cluster of branch points)."""

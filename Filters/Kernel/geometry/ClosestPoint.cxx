@@ -588,6 +588,7 @@ struct PatchSearch
   double zeroU, zeroV;
   std::vector<PatchFootpoint> found;
   int boxes = 0;
+  int limit = MaxPatchBoxes;
 
   void add(double u, double v)
   {
@@ -608,7 +609,7 @@ struct PatchSearch
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
-    if (++boxes > MaxPatchBoxes || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
+    if (++boxes > limit || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
     {
       return;
     }
@@ -664,8 +665,8 @@ struct PatchSearch
 
 namespace
 {
-std::vector<PatchFootpoint> pieceFootpoints(
-  const BezierPatch& patch, const Vec3& query, double maxDistance)
+std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3& query,
+  double maxDistance, int* boxBudget = nullptr)
 {
   std::vector<PatchFootpoint> result;
   if (distanceToBox(patch.boundingBox(), query) > maxDistance)
@@ -673,7 +674,8 @@ std::vector<PatchFootpoint> pieceFootpoints(
     return result;
   }
   const PatchPolys pp = patchPolys(patch, query);
-  PatchSearch search{ patch, query, maxDistance, pp.zeroU, pp.zeroV, {}, 0 };
+  PatchSearch search{ patch, query, maxDistance, pp.zeroU, pp.zeroV, {}, 0,
+    boxBudget ? std::max(1, *boxBudget) : MaxPatchBoxes };
   const bool flatU = pp.gu.maxAbs() <= pp.zeroU, flatV = pp.gv.maxAbs() <= pp.zeroV;
   if (flatU && flatV)
   {
@@ -704,6 +706,8 @@ std::vector<PatchFootpoint> pieceFootpoints(
     return result;
   }
   search.search(pp.gu, pp.gv, 0.0, 1.0, 0.0, 1.0, 0);
+  if (boxBudget)
+    *boxBudget -= search.boxes;
   result = search.found;
 
   // Minima on the boundary: minima of the side curves where moving inwards does not get
@@ -800,7 +804,10 @@ std::vector<PatchFootpoint> elongatedFootpoints(
   std::priority_queue<Piece> queue;
   queue.push({ distanceToBox(patch.boundingBox(), query), 0.0, 1.0, 0.0, 1.0 });
   std::vector<PatchFootpoint> found;
-  for (int pieces = 0; !queue.empty() && pieces < MaxPieces;)
+  // One budget of boxes for all pieces: a search that cannot settle (a side 1e9 times
+  // thinner than long) stays bounded like one patch's.
+  int boxBudget = MaxPatchBoxes;
+  for (int pieces = 0; !queue.empty() && pieces < MaxPieces && boxBudget > 0;)
   {
     const Piece c = queue.top();
     queue.pop();
@@ -827,7 +834,7 @@ std::vector<PatchFootpoint> elongatedFootpoints(
       continue;
     }
     ++pieces;
-    for (PatchFootpoint f : pieceFootpoints(sub, query, maxDistance))
+    for (PatchFootpoint f : pieceFootpoints(sub, query, maxDistance, &boxBudget))
     {
       f.u = c.u0 + f.u * (c.u1 - c.u0);
       f.v = c.v0 + f.v * (c.v1 - c.v0);

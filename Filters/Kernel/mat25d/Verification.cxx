@@ -16,6 +16,8 @@ MAT25DVerification verifyMAT25D(
   const int n = static_cast<int>(mat.points.size());
   int sheetPoints = 0;
   v.aspect = boundary.aspect();
+  if (!v.contactsCounted())
+    return v;
   for (int i = 0; i < n; ++i)
   {
     const MedialPoint3D& p = mat.points[i];
@@ -30,7 +32,7 @@ MAT25DVerification verifyMAT25D(
       v.maxDistanceError = std::isnan(error) ? INFINITY : error;
       v.worstPoint = i;
     }
-    if (p.contacts <= 0 || !v.contactsCounted())
+    if (p.contacts <= 0)
       continue;
     ++v.contactsChecked;
     const int count = static_cast<int>(
@@ -58,8 +60,8 @@ std::string MAT25DVerification::problems(double distanceTolerance, const MedialC
   }
   if (!contactsCounted())
   {
-    out += std::string(out.empty() ? "" : "; ") + "touchpoints not counted: the solid is " +
-      format(aspect) + " times longer than thick (counted up to " + format(MaxCountedAspect) + ")";
+    out += std::string(out.empty() ? "" : "; ") + "not verified: the solid is " + format(aspect) +
+      " times longer than thick (verified up to " + format(MaxVerifiedAspect) + ")";
   }
   if (contactMismatches > 0)
   {

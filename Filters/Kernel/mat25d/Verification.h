@@ -22,12 +22,12 @@ struct MAT25DVerification
   int contactMismatches = 0;     ///< of those, how many have another count
   int firstMismatch = -1;        ///< the first such point
   int firstMismatchCount = 0;    ///< and how many touchpoints it has
-  /// The solid's longest extent over its shortest; past MaxCountedAspect the touchpoints
-  /// are not counted (the patch search cannot resolve them in bounded time) and the
-  /// verification fails, saying so.
+  /// The solid's longest extent over its shortest; past MaxVerifiedAspect nothing is
+  /// checked (the patch closest-point search cannot resolve sides that elongated in
+  /// bounded time: minutes per solid) and the verification fails, saying so.
   double aspect = 1.0;
-  static constexpr double MaxCountedAspect = 1e8;
-  bool contactsCounted() const { return aspect <= MaxCountedAspect; }
+  static constexpr double MaxVerifiedAspect = 1e8;
+  bool contactsCounted() const { return aspect <= MaxVerifiedAspect; }
 
   bool ok(double distanceTolerance) const
   {
