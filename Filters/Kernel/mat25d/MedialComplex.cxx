@@ -88,7 +88,9 @@ int MedialComplex::weld(double tolerance)
   {
     size_t operator()(const Key& k) const
     {
-      return static_cast<size_t>(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL);
+      // (Unsigned: the products wrap instead of overflowing.)
+      return static_cast<size_t>(static_cast<unsigned long long>(k[0]) * 73856093ULL ^
+        static_cast<unsigned long long>(k[1]) * 19349663ULL ^ static_cast<unsigned long long>(k[2]) * 83492791ULL);
     }
   };
   std::unordered_map<Key, int, KeyHash> first; // cell → first kept point in it
@@ -107,7 +109,9 @@ int MedialComplex::weld(double tolerance)
     for (int a = 0; a < 3; ++a)
     {
       const double u = p.x[a] / cell, f = std::floor(u);
-      k[a] = static_cast<long long>(f);
+      // Clamped: a tolerance 1e-24 (a plate 1e-12 thin) puts coordinates of 1e6 at cell
+      // 1e24, past long long; points that far out share a cell, compared within tolerance.
+      k[a] = static_cast<long long>(std::clamp(f, -4e18, 4e18));
       count[a] = 1;
       options[a][0] = 0;
       if (u - f < 1e-5)
