@@ -598,6 +598,14 @@ void Tracer::trace(const Pending& p)
   // the next generator is on the new bisector to that angle only. Solve it again with that
   // front held at its start; where that would send the other front back (a junction
   // convex by a hair) hold the other front instead. What the jump skips is covered.
+  // Moves both fronts to state t, covering the boundary they sweep on the way.
+  auto advanceTo = [&](const BisectorState& t) {
+    a.interval = Cover.cover(a.g, a.s, t.sa, a.interval);
+    b.interval = Cover.cover(b.g, t.sb, b.s, b.interval);
+    a.s = t.sa;
+    b.s = t.sb;
+    y = t;
+  };
   auto resync = [&](int switched) {
     const Bisector Bs(G, a.g, b.g);
     const Vec2 before = Bs.point(y);
@@ -612,11 +620,7 @@ void Tracer::trace(const Pending& p)
       t.sb = std::max(t.sb, 0.0);
       if (!(t.sa >= a.s && t.sb <= b.s))
         continue;
-      a.interval = Cover.cover(a.g, a.s, t.sa, a.interval);
-      b.interval = Cover.cover(b.g, t.sb, b.s, b.interval);
-      a.s = t.sa;
-      b.s = t.sb;
-      y = t;
+      advanceTo(t);
       return;
     }
   };
@@ -1043,11 +1047,7 @@ void Tracer::trace(const Pending& p)
         break;
       }
       // Accept the step.
-      a.interval = Cover.cover(a.g, a.s, y1.sa, a.interval);
-      b.interval = Cover.cover(b.g, y1.sb, b.s, b.interval);
-      a.s = y1.sa;
-      b.s = y1.sb;
-      y = y1;
+      advanceTo(y1);
       aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 10 * CoverageSlop;
       bLeftStart = bLeftStart || b.g != p.b.g || std::abs(b.s - p.b.s) > 10 * CoverageSlop;
       seg.samples.push_back(sampleOf(x1, y1.r));
