@@ -86,13 +86,19 @@ bool Bisector::correct(BisectorState& y, int fixed, double tolerance) const
 namespace exactmat
 {
 
-bool polishBranchPoint(const Generators& G, int ga, int gb, int gc, double& sa, double& sb,
+bool polishBranchPoint(const Generators& G, int& ga, int& gb, int& gc, double& sa, double& sb,
   double& sc, double& r, double tolerance)
 {
   Eigen::Vector4d y(sa, sb, sc, r);
-  for (int it = 0; it < 30; ++it)
+  int g[3] = { ga, gb, gc };
+  // Moves to a neighbour are bounded: a footpoint at a junction could be handed back and
+  // forth by rounding.
+  int moves = 0;
+  constexpr int MaxMoves = 6;
+  for (int it = 0; it < 30 + 4 * MaxMoves; ++it)
   {
-    const GeneratorPoint a = G.evaluate(ga, y(0)), b = G.evaluate(gb, y(1)), c = G.evaluate(gc, y(2));
+    const GeneratorPoint a = G.evaluate(g[0], y(0)), b = G.evaluate(g[1], y(1)),
+                         c = G.evaluate(g[2], y(2));
     const Vec2 xa = a.p + y(3) * a.n;
     const Vec2 e1 = xa - b.p - y(3) * b.n, e2 = xa - c.p - y(3) * c.n;
     if (std::max(e1.norm(), e2.norm()) <= tolerance)
@@ -100,6 +106,9 @@ bool polishBranchPoint(const Generators& G, int ga, int gb, int gc, double& sa, 
       if (y(0) < -1e-9 || y(0) > 1 + 1e-9 || y(1) < -1e-9 || y(1) > 1 + 1e-9 || y(2) < -1e-9 ||
         y(2) > 1 + 1e-9 || y(3) < 0.0)
         return false;
+      ga = g[0];
+      gb = g[1];
+      gc = g[2];
       sa = std::min(1.0, std::max(0.0, y(0)));
       sb = std::min(1.0, std::max(0.0, y(1)));
       sc = std::min(1.0, std::max(0.0, y(2)));
@@ -118,6 +127,25 @@ bool polishBranchPoint(const Generators& G, int ga, int gb, int gc, double& sa, 
     y -= lu.solve(Eigen::Vector4d(e1.x(), e1.y(), e2.x(), e2.y()));
     if (!y.allFinite())
       return false;
+    // Past an end by more than rounding: go on along the neighbour, as far (in length)
+    // as past the end. Within rounding of it the end is the footpoint (clamped above).
+    constexpr double Past = 1e-12;
+    for (int k = 0; k < 3 && moves < MaxMoves; ++k)
+    {
+      const Generator& gen = G[g[k]];
+      const bool forward = y(k) > 1.0 + Past && gen.endJunction != VertexKind::Convex;
+      const bool backward = y(k) < -Past && gen.startJunction != VertexKind::Convex;
+      const int to = forward ? gen.next : (backward ? gen.prev : -1);
+      if (to < 0)
+        continue;
+      const double past = forward ? y(k) - 1.0 : -y(k);
+      const double speedHere = G.evaluate(g[k], forward ? 1.0 : 0.0).dp.norm();
+      const double speedThere = G.evaluate(to, forward ? 0.0 : 1.0).dp.norm();
+      const double there = speedThere > 0.0 ? std::min(0.5, past * speedHere / speedThere) : 0.0;
+      g[k] = to;
+      y(k) = forward ? there : 1.0 - there;
+      ++moves;
+    }
   }
   return false;
 }

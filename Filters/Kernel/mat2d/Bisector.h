@@ -52,9 +52,13 @@ private:
 
 /// Polishes a branch point (thesis §4.3.2) by Newton on the three-generator system
 /// P_a + r N_a = P_b + r N_b = P_c + r N_c (unknowns s_a, s_b, s_c, r), so that it is
-/// exact to rounding rather than to the bisection's tolerance. Returns false (leaving the
-/// inputs) when it does not converge within 30 iterations or leaves the parameter ranges.
-bool polishBranchPoint(const Generators& G, int ga, int gb, int gc, double& sa, double& sb,
+/// exact to rounding rather than to the bisection's tolerance. A footpoint that Newton
+/// carries past its generator's end across a smooth or reflex junction moves on to the
+/// neighbouring generator (the generator ids are updated): at a node whose footpoints lie
+/// at junctions of pieces (a symmetric blob's troughs) rounding puts each on either side.
+/// Returns false (leaving the inputs) when it does not converge within 30 iterations or
+/// leaves the parameter ranges at a convex vertex.
+bool polishBranchPoint(const Generators& G, int& ga, int& gb, int& gc, double& sa, double& sb,
   double& sc, double& r, double tolerance);
 
 } // namespace exactmat

@@ -606,24 +606,33 @@ void Tracer::trace(const Pending& p)
     b.s = t.sb;
     y = t;
   };
-  auto resync = [&](int switched) {
+  auto resync = [&](int switched, bool anyDirection = false) {
     const Bisector Bs(G, a.g, b.g);
     const Vec2 before = Bs.point(y);
     for (const int held : { switched, 1 - switched })
     {
       BisectorState t = y;
       const bool solved = Bs.correct(t, held, 1e-13 * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+      std::fprintf(stderr, "  resync held %d: a g%d s%.15g b g%d s%.15g -> solved %d sa %.15g sb %.15g moved %.3g\n", held, a.g, a.s, b.g, b.s, (int)solved, t.sa, t.sb, (Bs.point(t) - before).norm());
+#endif
       if (!solved || (Bs.point(t) - before).norm() > 1e-6 * L)
         continue;
       // A front that would pass its own generator's end stops there (and moves on next).
       t.sa = std::min(t.sa, 1.0);
       t.sb = std::max(t.sb, 0.0);
-      if (!(t.sa >= a.s && t.sb <= b.s))
+      if (!anyDirection && !(t.sa >= a.s && t.sb <= b.s))
+        continue;
+      if (anyDirection && !(t.sa >= 0.0 && t.sb <= 1.0))
         continue;
       advanceTo(t);
       return;
     }
   };
+  // The node's footpoints are polished with the generators that meet there, which at a
+  // junction of pieces may be the neighbours of this wedge's (to rounding): start on
+  // this pair's own bisector, either front held.
+  resync(0, true);
   for (int iteration = 0; endNode < 0; ++iteration)
   {
     if (iteration > O.maxSamplesPerSegment)
@@ -662,6 +671,10 @@ void Tracer::trace(const Pending& p)
       b = Front{ G[b.g].prev, 1.0 };
       y.sb = 1.0;
       resync(1);
+      // Both fronts at junctions at once (a symmetric lobe): the resync may have put
+      // front a on its end.
+      if (a.s >= 1.0 - ParamEps)
+        continue;
     }
     const Bisector B(G, a.g, b.g);
     const Vec2 x0 = B.point(y);
@@ -958,12 +971,20 @@ void Tracer::trace(const Pending& p)
           knownNode = id;
           return true;
         };
-        auto polish = [&](double window) {
+        // The polished branch point's fronts may have moved on to the next generators
+        // (footpoints at junctions of pieces land on either side under rounding).
+        int branchA = a.g, branchB = b.g;
+        auto branchPoint = [&](const BisectorState& t, int ga, int gb) -> Vec2 {
+          return ga == a.g && gb == b.g ? B.point(t) : Bisector(G, ga, gb).point(t);
+        };
+        const double strict = 1e-12 * L + 1e-12 * yb.r;
+        auto polish = [&](double window, double margin) {
           const Vec2 xg = B.point(yb);
           const auto near = G.footpointsWithin(xg, yb.r * (1.0 + 1e-6) + (window > 1e-6 * L ? window : 1e-7 * L));
           const GeneratorPoint fa = G.evaluate(a.g, yb.sa), fb = G.evaluate(b.g, yb.sb);
           bool found = false;
           BisectorState best = yb;
+          int bestA = a.g, bestB = b.g;
           double bestDistance = INFINITY;
           for (const BoundaryLocation& c : near)
           {
@@ -971,30 +992,69 @@ void Tracer::trace(const Pending& p)
               continue;
             BisectorState yp = yb;
             double sc = c.s;
-            if (!polishBranchPoint(G, a.g, b.g, c.g, yp.sa, yp.sb, sc, yp.r, 1e-14 * L) ||
-              !(yp.sa >= y.sa - 1e-9 && yp.sb <= y.sb + 1e-9))
+            int ga = a.g, gb = b.g, gc = c.g;
+            if (!polishBranchPoint(G, ga, gb, gc, yp.sa, yp.sb, sc, yp.r, 1e-14 * L))
+            {
+#ifdef EXACTMAT_TRACE_DEBUG
+              std::fprintf(stderr, "  polish with g%d@%.15g failed (fronts g%d@%.15g g%d@%.15g)\n", c.g, c.s, a.g, yb.sa, b.g, yb.sb);
+#endif
               continue;
-            const Vec2 xp = B.point(yp);
-            if (found && (xp - B.point(best)).norm() <= 1e-12 * L)
+            }
+            // A junction is the end of one generator and the start of the next: name it
+            // as the fronts do (which moved on within rounding of it).
+            if (ga == G[a.g].prev && yp.sa >= 1.0 - 1e-9)
+            {
+              ga = a.g;
+              yp.sa = 0.0;
+            }
+            if (gb == G[b.g].next && yp.sb <= 1e-9)
+            {
+              gb = b.g;
+              yp.sb = 1.0;
+            }
+            // Ahead of both fronts: on their generators, or on the ones they move on to.
+            // Where the disks are empty only to the input's rounding, the fronts may have
+            // passed the branch point by as much: a point just behind them is taken too.
+            const bool aheadA = ga == a.g ? yp.sa >= y.sa - 1e-9 : ga == G[a.g].next;
+            const bool aheadB = gb == b.g ? yp.sb <= y.sb + 1e-9 : gb == G[b.g].prev;
+            const bool neighbours = (ga == a.g || ga == G[a.g].next || ga == G[a.g].prev) &&
+              (gb == b.g || gb == G[b.g].next || gb == G[b.g].prev);
+            const bool justBehind = margin > strict && neighbours &&
+              (branchPoint(yp, ga, gb) - x0).norm() <= 1e-6 * L;
+            if (!(aheadA && aheadB) && !justBehind)
+            {
+#ifdef EXACTMAT_TRACE_DEBUG
+              std::fprintf(stderr, "  polish with g%d: g%d@%.15g g%d@%.15g behind the fronts g%d@%.15g g%d@%.15g\n", gc, ga, yp.sa, gb, yp.sb, a.g, y.sa, b.g, y.sb);
+#endif
+              continue;
+            }
+            const Vec2 xp = branchPoint(yp, ga, gb);
+            if (found && (xp - branchPoint(best, bestA, bestB)).norm() <= 1e-12 * L)
               continue; // the same branch point again (a node of degree k: k candidates)
             const double fromStart = (xp - x0).norm();
 #ifdef EXACTMAT_TRACE_DEBUG
-            std::fprintf(stderr, "  polish with g%d: (%.15g %.15g) r %.15g fromStart %.3g fromXg %.3g empty %d\n", c.g,
+            std::fprintf(stderr, "  polish with g%d: g%d g%d (%.15g %.15g) r %.15g fromStart %.3g fromXg %.3g empty %d\n", gc, ga, gb,
               xp.x(), xp.y(), yp.r, fromStart, (xp - xg).norm(),
-              (int)!G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)));
+              (int)!G.anyCloserThan(xp, yp.r - margin));
 #endif
             // (Not the node this segment starts from: it cannot end there.)
             const bool atStartNode = (xp - Graph.nodes[p.node].sample.x).norm() <= 1e-13 * L;
             if ((xp - xg).norm() < window && fromStart < bestDistance && !atStartNode &&
-              !G.anyCloserThan(xp, yp.r - (1e-12 * L + 1e-12 * yp.r)))
+              !G.anyCloserThan(xp, yp.r - margin))
             {
               best = yp;
+              bestA = ga;
+              bestB = gb;
               bestDistance = fromStart;
               found = true;
             }
           }
           if (found)
+          {
             yb = best;
+            branchA = bestA;
+            branchB = bestB;
+          }
           return found;
         };
         // Coarse, then polished; the coarse precision follows the step, so a segment
@@ -1004,10 +1064,33 @@ void Tracer::trace(const Pending& p)
         // where the third generator meets the segment at a grazing angle θ (next to an
         // almost flat convex vertex) it places the branch point up to margin / θ past the
         // true one, anywhere back to the last valid point: polish near first, then there.
+        // The disk of the right candidate is empty to rounding; where the input is known to
+        // fewer digits than that (far from the origin, pieces meet with kinks of its
+        // rounding), to the input's rounding, as the bisection's disk test has it.
         const double wide = 1.01 * (B.point(yb) - x0).norm();
-        if (!reuseNode() && !polish(1e-6 * L) && !(wide > 1e-6 * L && polish(wide)))
+        const double loose = (1e-11 + InputRounding) * L + 1e-11 * yb.r;
+        if (!reuseNode() && !polish(1e-6 * L, strict) && !(wide > 1e-6 * L && polish(wide, strict)) &&
+          !(loose > 2 * strict && polish(1e-6 * L, loose)))
           bisect(1e-13 * L);
-        const Vec2 xb = B.point(yb);
+        const Vec2 xb = branchPoint(yb, branchA, branchB);
+        // Fronts move on to the generators of the polished footpoints (or back, by
+        // rounding, to the one just left).
+        if (branchA != a.g)
+        {
+          const bool on = branchA == G[a.g].next;
+          if (on)
+            Cover.cover(a.g, y.sa, 1.0, a.interval);
+          a = Front{ branchA, on ? 0.0 : 1.0 };
+          y.sa = a.s;
+        }
+        if (branchB != b.g)
+        {
+          const bool on = branchB == G[b.g].prev;
+          if (on)
+            Cover.cover(b.g, 0.0, y.sb, b.interval);
+          b = Front{ branchB, on ? 1.0 : 0.0 };
+          y.sb = b.s;
+        }
         a.s = yb.sa;
         b.s = yb.sb;
         a.interval = Cover.cover(a.g, y.sa, yb.sa, a.interval);
