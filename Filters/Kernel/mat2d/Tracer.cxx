@@ -59,6 +59,21 @@ public:
     return static_cast<int>(list.size()) - 1;
   }
 
+  /// Takes interval `id` of generator g back to end at s (its upper end for a front moving
+  /// forward, dir > 0; its lower end otherwise): a front that went past where its segment
+  /// ends.
+  void retreat(int g, int id, double s, int dir)
+  {
+    auto& list = Intervals[g];
+    if (id < 0 || id >= static_cast<int>(list.size()))
+      return;
+    Log.push_back({ g, id, list[id].first, list[id].second, false });
+    if (dir > 0)
+      list[id].second = std::max(list[id].first, std::min(list[id].second, s));
+    else
+      list[id].first = std::min(list[id].second, std::max(list[id].first, s));
+  }
+
   size_t mark() const { return Log.size(); }
 #ifdef EXACTMAT_TRACE_DEBUG
   void dump(int g) const
@@ -629,6 +644,57 @@ void Tracer::trace(const Pending& p)
       return;
     }
   };
+  // A front at a convex vertex that the other front does not share, with a disk of
+  // radius > 0: the vertex is almost flat, and the edge after it meets this pair at a
+  // branch point the steps' disk tests (empty to a margin) did not tell from the vertex's
+  // normal. Polish that branch point and end there; false when it is not one.
+  auto branchAtConvexVertex = [&](bool frontA) {
+    if (y.r <= 1e-9 * L)
+      return false;
+    int ga = a.g, gb = b.g, gc = frontA ? G[a.g].next : G[b.g].prev;
+    if (gc < 0 || gc == a.g || gc == b.g)
+      return false;
+    BisectorState t = y;
+    double sc = frontA ? 0.0 : 1.0;
+    if (!polishBranchPoint(G, ga, gb, gc, t.sa, t.sb, sc, t.r, 1e-14 * L) || ga != a.g || gb != b.g)
+      return false;
+    const Bisector Bv(G, a.g, b.g);
+    const Vec2 xb = Bv.point(t);
+    if ((xb - Bv.point(y)).norm() > 1e-6 * L || !emptyDisk(xb, t.r))
+      return false;
+    // The front went up to the vertex; the segment ends short of it.
+    const double aWas = a.s, bWas = b.s;
+    advanceTo(t);
+    if (t.sa < aWas)
+      Cover.retreat(a.g, a.interval, t.sa, +1);
+    if (t.sb > bWas)
+      Cover.retreat(b.g, b.interval, t.sb, -1);
+    // So are the samples: a footpoint sequence that went back would sweep the loop.
+    while (seg.samples.size() > 1 &&
+      ((seg.samples.back().foot[0].g == a.g && seg.samples.back().foot[0].s > t.sa) ||
+        (seg.samples.back().foot[1].g == b.g && seg.samples.back().foot[1].s < t.sb)))
+      seg.samples.pop_back();
+    seg.samples.push_back(sampleOf(xb, t.r));
+    const std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, t.r * (1.0 + 1e-10) + 1e-11 * L);
+    const int id = findNode(xb, NodeMerge * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+    std::fprintf(stderr, "  branch at the convex vertex after g%d: (%.12g %.12g) r %.12g, %zu footpoints, node %d\n",
+      frontA ? a.g : b.g, xb.x(), xb.y(), t.r, fps.size(), id);
+#endif
+    if (id < 0)
+    {
+      finish(addNode(xb, t.r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps));
+      spawnWedges(endNode);
+    }
+    else
+    {
+      seg.samples.back().x = Graph.nodes[id].sample.x;
+      seg.samples.back().radius = Graph.nodes[id].sample.radius;
+      finish(id);
+      mergeIntoNode(id, fps);
+    }
+    return true;
+  };
   // The node's footpoints are polished with the generators that meet there, which at a
   // junction of pieces may be the neighbours of this wedge's (to rounding): start on
   // this pair's own bisector, either front held.
@@ -644,6 +710,8 @@ void Tracer::trace(const Pending& p)
     // Fronts at the end of their generator move on, or stop at a convex vertex.
     if (a.s >= 1.0 - ParamEps)
     {
+      if (G[a.g].endJunction == VertexKind::Convex && G[a.g].next != b.g && branchAtConvexVertex(true))
+        break;
       if (G[a.g].endJunction == VertexKind::Convex)
       {
         const Vec2 v = G.evaluate(a.g, 1.0).p;
@@ -659,6 +727,8 @@ void Tracer::trace(const Pending& p)
     }
     if (b.s <= ParamEps)
     {
+      if (G[b.g].startJunction == VertexKind::Convex && G[b.g].prev != a.g && branchAtConvexVertex(false))
+        break;
       if (G[b.g].startJunction == VertexKind::Convex)
       {
         const Vec2 v = G.evaluate(b.g, 0.0).p;
