@@ -658,9 +658,12 @@ void Tracer::trace(const Pending& p)
     double sc = frontA ? 0.0 : 1.0;
     if (!polishBranchPoint(G, ga, gb, gc, t.sa, t.sb, sc, t.r, 1e-14 * L) || ga != a.g || gb != b.g)
       return false;
+    // It lies between the last two samples (the step that reached the vertex passed it
+    // at a grazing angle): no farther back than the one before.
     const Bisector Bv(G, a.g, b.g);
-    const Vec2 xb = Bv.point(t);
-    if ((xb - Bv.point(y)).norm() > 1e-6 * L || !emptyDisk(xb, t.r))
+    const Vec2 xb = Bv.point(t), xv = Bv.point(y);
+    const double back = seg.samples.size() > 1 ? (seg.samples[seg.samples.size() - 2].x - xv).norm() : 0.0;
+    if ((xb - xv).norm() > std::max(1e-6 * L, 1.01 * back) || !emptyDisk(xb, t.r))
       return false;
     // The front went up to the vertex; the segment ends short of it.
     const double aWas = a.s, bWas = b.s;
