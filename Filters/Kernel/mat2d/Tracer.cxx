@@ -648,6 +648,24 @@ void Tracer::trace(const Pending& p)
   // radius > 0: the vertex is almost flat, and the edge after it meets this pair at a
   // branch point the steps' disk tests (empty to a margin) did not tell from the vertex's
   // normal. Polish that branch point and end there; false when it is not one.
+  // The segment ends at the branch point (xb, r), its last sample: a new node with the
+  // footpoints found there (and its wedges to trace), or the node already there, exactly
+  // where it is. Distinct branch points of a cluster may lie 1e-8 apart: only points
+  // closer than the verification's tolerance are the same node.
+  auto endAtBranchPoint = [&](const Vec2& xb, double r) {
+    const std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, r * (1.0 + 1e-10) + 1e-11 * L);
+    const int id = findNode(xb, NodeMerge * L);
+    if (id < 0)
+    {
+      finish(addNode(xb, r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps));
+      spawnWedges(endNode);
+      return;
+    }
+    seg.samples.back().x = Graph.nodes[id].sample.x;
+    seg.samples.back().radius = Graph.nodes[id].sample.radius;
+    finish(id);
+    mergeIntoNode(id, fps);
+  };
   auto branchAtConvexVertex = [&](bool frontA) {
     if (y.r <= 1e-9 * L)
       return false;
@@ -678,24 +696,11 @@ void Tracer::trace(const Pending& p)
         (seg.samples.back().foot[1].g == b.g && seg.samples.back().foot[1].s < t.sb)))
       seg.samples.pop_back();
     seg.samples.push_back(sampleOf(xb, t.r));
-    const std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, t.r * (1.0 + 1e-10) + 1e-11 * L);
-    const int id = findNode(xb, NodeMerge * L);
 #ifdef EXACTMAT_TRACE_DEBUG
-    std::fprintf(stderr, "  branch at the convex vertex after g%d: (%.12g %.12g) r %.12g, %zu footpoints, node %d\n",
-      frontA ? a.g : b.g, xb.x(), xb.y(), t.r, fps.size(), id);
+    std::fprintf(stderr, "  branch at the convex vertex after g%d: (%.12g %.12g) r %.12g\n",
+      frontA ? a.g : b.g, xb.x(), xb.y(), t.r);
 #endif
-    if (id < 0)
-    {
-      finish(addNode(xb, t.r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps));
-      spawnWedges(endNode);
-    }
-    else
-    {
-      seg.samples.back().x = Graph.nodes[id].sample.x;
-      seg.samples.back().radius = Graph.nodes[id].sample.radius;
-      finish(id);
-      mergeIntoNode(id, fps);
-    }
+    endAtBranchPoint(xb, t.r);
     return true;
   };
   // The node's footpoints are polished with the generators that meet there, which at a
@@ -1180,25 +1185,7 @@ void Tracer::trace(const Pending& p)
           accepted = true;
           break;
         }
-        const double reach = yb.r * (1.0 + 1e-10) + 1e-11 * L;
-        std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, reach);
-        // Distinct branch points of a cluster may lie 1e-8 apart: only points closer than
-        // the verification's tolerance are the same node.
-        int id = findNode(xb, NodeMerge * L);
-        if (id < 0)
-        {
-          id = addNode(xb, yb.r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps);
-          finish(id);
-          spawnWedges(id);
-        }
-        else
-        {
-          // The segment ends at that node, exactly where it is.
-          seg.samples.back().x = Graph.nodes[id].sample.x;
-          seg.samples.back().radius = Graph.nodes[id].sample.radius;
-          finish(id);
-          mergeIntoNode(id, fps);
-        }
+        endAtBranchPoint(xb, yb.r);
         accepted = true;
         break;
       }
