@@ -216,6 +216,9 @@ private:
   void mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints);
   void trace(const Pending& p);
   bool emptyDisk(const Vec2& x, double r) const;
+  /// How far inside a disk of radius r the boundary may reach and the disk still count
+  /// as empty: rounding, and no less than the input's own.
+  double diskMargin(double r) const;
   bool curvatureOk(int g, double s, double r) const;
   void startAt(int g, double s);
   BoundaryLocation location(int g, double s) const;
@@ -272,7 +275,12 @@ bool Tracer::emptyDisk(const Vec2& x, double r) const
   // fronts' own footpoints are solved to 1e-13 of the size, well inside this. Input far
   // from the origin is known to fewer digits (pieces meet only to its rounding): no
   // margin below that.
-  return !G.anyCloserThan(x, r - ((1e-11 + InputRounding) * L + 1e-11 * r));
+  return !G.anyCloserThan(x, r - diskMargin(r));
+}
+
+double Tracer::diskMargin(double r) const
+{
+  return (1e-11 + InputRounding) * L + 1e-11 * r;
 }
 
 bool Tracer::curvatureOk(int g, double s, double r) const
@@ -644,10 +652,6 @@ void Tracer::trace(const Pending& p)
       return;
     }
   };
-  // A front at a convex vertex that the other front does not share, with a disk of
-  // radius > 0: the vertex is almost flat, and the edge after it meets this pair at a
-  // branch point the steps' disk tests (empty to a margin) did not tell from the vertex's
-  // normal. Polish that branch point and end there; false when it is not one.
   // The segment ends at the branch point (xb, r), its last sample: a new node with the
   // footpoints found there (and its wedges to trace), or the node already there, exactly
   // where it is. Distinct branch points of a cluster may lie 1e-8 apart: only points
@@ -666,6 +670,10 @@ void Tracer::trace(const Pending& p)
     finish(id);
     mergeIntoNode(id, fps);
   };
+  // A front at a convex vertex that the other front does not share, with a disk of
+  // radius > 0: the vertex is almost flat, and the edge after it meets this pair at a
+  // branch point the steps' disk tests (empty to a margin) did not tell from the vertex's
+  // normal. Polish that branch point and end there; false when it is not one.
   auto branchAtConvexVertex = [&](bool frontA) {
     if (y.r <= 1e-9 * L)
       return false;
@@ -1146,7 +1154,7 @@ void Tracer::trace(const Pending& p)
         // fewer digits than that (far from the origin, pieces meet with kinks of its
         // rounding), to the input's rounding, as the bisection's disk test has it.
         const double wide = 1.01 * (B.point(yb) - x0).norm();
-        const double loose = (1e-11 + InputRounding) * L + 1e-11 * yb.r;
+        const double loose = diskMargin(yb.r);
         if (!reuseNode() && !polish(1e-6 * L, strict) && !(wide > 1e-6 * L && polish(wide, strict)) &&
           !(loose > 2 * strict && polish(1e-6 * L, loose)))
           bisect(1e-13 * L);
