@@ -4,7 +4,8 @@
 //
 //   exactmat_bench_mat25d [--quick]
 #include "mat25d/MAT25D.h"
-#include "mat25d/Verification.h"
+#include "mat25d/SweptBoundary.h"
+#include "medial/Verification.h"
 #include "mat2d/Tracer.h"
 #include "shapes/Catalogue.h"
 #include "shapes/Primitives.h"
@@ -85,7 +86,7 @@ Result measure(const Object& o, const MAT2DOptions& options, int repeats, bool v
     const SweptBoundary boundary(b, map);
     const int sheetPoints =
       mat.countPoints(MedialPoint3DType::Sheet) + mat.countPoints(MedialPoint3DType::ConvexEdge);
-    const MAT25DVerification v = verifyMAT25D(boundary, mat, std::max(1, sheetPoints / 300));
+    const MedialVerification v = verifyMedialComplex(boundary, mat, std::max(1, sheetPoints / 300));
     r.error = v.maxDistanceError;
     r.mismatches = v.contactMismatches;
     r.verified = v.points;

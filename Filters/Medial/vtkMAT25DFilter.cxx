@@ -7,7 +7,8 @@
 #include "brep/NormalisePieces.h"
 #include "common/InputError.h"
 #include "mat25d/MAT25D.h"
-#include "mat25d/Verification.h"
+#include "mat25d/SweptBoundary.h"
+#include "medial/Verification.h"
 #include "mat2d/Tracer.h"
 
 #include <vtkCellArray.h>
@@ -218,7 +219,7 @@ int vtkMAT25DFilter::RequestData(
               this->MaximumSheetPointsVerified)
         : VTK_INT_MAX;
       const exactmat::SweptBoundary boundary(profile, map);
-      const exactmat::MAT25DVerification v = exactmat::verifyMAT25D(boundary, mat, stride);
+      const exactmat::MedialVerification v = exactmat::verifyMedialComplex(boundary, mat, stride);
       this->NumberOfVerifiedPoints = v.points;
       this->MaximumVerifiedError = v.maxDistanceError;
       this->NumberOfTouchpointMismatches = v.contactMismatches;

@@ -2,7 +2,8 @@
 // exact swept boundary.
 #include "common/InputError.h"
 #include "mat25d/MAT25D.h"
-#include "mat25d/Verification.h"
+#include "mat25d/SweptBoundary.h"
+#include "medial/Verification.h"
 #include "mat2d/Tracer.h"
 #include "shapes/Catalogue.h"
 #include "shapes/Primitives.h"
@@ -55,7 +56,7 @@ Sweep revolution(double degrees, const Vec3& axisPoint = Vec3::Zero(),
 
 void expectVerified(const SweptMAT& r, const std::string& what, int stride = 1)
 {
-  const MAT25DVerification v = verifyMAT25D(*r.boundary, r.mat, stride);
+  const MedialVerification v = verifyMedialComplex(*r.boundary, r.mat, stride);
   EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance)
     << what << ": worst point " << v.worstPoint << " ("
     << (v.worstPoint >= 0 ? toString(r.mat.points[v.worstPoint].type) : "") << ")";
@@ -107,7 +108,7 @@ TEST(MAT25D, BoxJunctionsAndSeams)
     }
   }
   expectVerified(*r, "box");
-  EXPECT_GT(verifyMAT25D(*r->boundary, r->mat, 7).contactsChecked, 10);
+  EXPECT_GT(verifyMedialComplex(*r->boundary, r->mat, 7).contactsChecked, 10);
 }
 
 // Sheets built strip by strip share their border vertices after the weld: no two output
@@ -148,7 +149,7 @@ std::vector<Vec3> bruteForceJunctions(const SweptMAT& r, double spacing)
     box.extend(p.patch.boundingBox());
   const double size = b.size();
   auto contactOn = [&](int source, const Vec3& x, const Vec3& near) {
-    SweptBoundary::Contact c;
+    SolidBoundary::Contact c;
     c.source = source;
     if (source < 0)
     {
@@ -187,7 +188,7 @@ std::vector<Vec3> bruteForceJunctions(const SweptMAT& r, double spacing)
           if (!r.sweep->projectOnProfileFace(0, q, foot, h) || !b.insideProfile(foot))
             continue;
         }
-        std::vector<SweptBoundary::Contact> c = b.touchpoints(q, d + 2.0 * spacing);
+        std::vector<SolidBoundary::Contact> c = b.touchpoints(q, d + 2.0 * spacing);
         if (c.size() < 4)
           continue;
         c.resize(4);

@@ -894,6 +894,54 @@ std::vector<PatchFootpoint> patchFootpoints(
                           : pieceFootpoints(patch, query, maxDistance);
 }
 
+namespace
+{
+// h = |A − P·w|² − r²·w² on a sub-box of the patch: negative somewhere? The coefficients
+// bound h; corners and the centre are values of h; split in u and v in turn until the
+// sign is decided or the box is 2^-24 of the patch, where the patch lies within
+// rounding of the sphere: that counts as not inside.
+bool negativeSomewhere2(const BernsteinPoly2& h, int depthU, int depthV)
+{
+  const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
+  (void)mx;
+  if (*mn >= 0.0)
+    return false;
+  if (h.at(0, 0) < 0.0 || h.at(h.nu, 0) < 0.0 || h.at(0, h.nv) < 0.0 || h.at(h.nu, h.nv) < 0.0)
+    return true;
+  if (h(0.5, 0.5) < 0.0)
+    return true;
+  const bool splitU = depthU <= depthV;
+  if ((splitU ? depthU : depthV) >= 24)
+    return false;
+  const BernsteinPoly2 a = splitU ? h.restrictedTo(0.0, 0.5, 0.0, 1.0) : h.restrictedTo(0.0, 1.0, 0.0, 0.5);
+  const BernsteinPoly2 b = splitU ? h.restrictedTo(0.5, 1.0, 0.0, 1.0) : h.restrictedTo(0.0, 1.0, 0.5, 1.0);
+  const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
+  return negativeSomewhere2(a, du, dv) || negativeSomewhere2(b, du, dv);
+}
+} // namespace
+
+bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius)
+{
+  if (!(radius > 0.0) || distanceToBox(patch.boundingBox(), query) >= radius)
+    return false;
+  const int p = patch.degreeU(), q = patch.degreeV();
+  BernsteinPoly2 d[3], w(p, q);
+  for (int k = 0; k < 3; ++k)
+    d[k] = BernsteinPoly2(p, q);
+  for (int i = 0; i <= p; ++i)
+  {
+    for (int j = 0; j <= q; ++j)
+    {
+      const Vec4& hp = patch.homogeneousPoint(i, j);
+      for (int k = 0; k < 3; ++k)
+        d[k].at(i, j) = hp(k) - query(k) * hp.w();
+      w.at(i, j) = hp.w();
+    }
+  }
+  const BernsteinPoly2 h = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - (radius * radius) * (w * w);
+  return negativeSomewhere2(h, 0, 0);
+}
+
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)
 {
   const std::vector<PatchFootpoint> fps = elongated(patch)

@@ -68,6 +68,13 @@ std::vector<PatchFootpoint> patchFootpoints(
 /// The global closest point of the patch.
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query);
 
+/// True when some point of the patch lies strictly closer than `radius` to the query: the
+/// sign of h(u,v) = |A − P·w|² − radius²·w² (degree 2p × 2q) decided by its Bernstein
+/// coefficients, with subdivision where they do not decide (to 2^-24 of the patch: closer
+/// than that the patch is within rounding of the sphere, which counts as not closer).
+/// The ball-emptiness test of the 3D tracer.
+bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius);
+
 /// Euclidean distance from a point to an axis-aligned box (0 inside): a lower bound for
 /// the distance to anything inside the box.
 double distanceToBox(const Box3& box, const Vec3& p);

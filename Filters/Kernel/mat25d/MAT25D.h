@@ -33,7 +33,7 @@
 /// (Boundary2D edge index), E the start profile face, E + 1 the end one, E + 2 + v the
 /// reflex edge swept by profile vertex v.
 
-#include "mat25d/MedialComplex.h"
+#include "medial/MedialComplex.h"
 #include "mat25d/Sweep.h"
 #include "mat2d/MedialGraph.h"
 

@@ -82,23 +82,15 @@ double SweptBoundary::distance(const Vec3& x) const
   return d;
 }
 
-bool SweptBoundary::sameContact(
-  const Vec3& x, double radius, const Vec3& a, const Vec3& b, double merge) const
+Vec3 SweptBoundary::nearestPoint(const Vec3& x) const
 {
-  const double gap = (a - b).norm();
-  if (gap <= merge)
-    return true;
-  if (gap > 0.2 * radius)
-    return false;
-  // (radius here: the ball's radius plus rounding.)
-  // Two minima close together are one contact when the boundary between them stays
-  // inside the ball (a flat valley: the ball osculates there), two when it bulges out.
-  const Vec3 mid = 0.5 * (a + b);
-  Vec3 nearest = mid;
+  // The side patches only: the valley test looks between two close minima, and the
+  // profile faces are planar (two minima on one of them are never a valley).
+  Vec3 nearest = x;
   double d = Unbounded;
-  SideTree.nearest(mid,
+  SideTree.nearest(x,
     [&](int i) {
-      const PatchFootpoint f = closestPoint(Sides[i].patch, mid);
+      const PatchFootpoint f = closestPoint(Sides[i].patch, x);
       if (f.distance < d)
       {
         d = f.distance;
@@ -107,18 +99,11 @@ bool SweptBoundary::sameContact(
       return f.distance;
     },
     nullptr);
-  return (nearest - x).norm() <= radius;
+  return nearest;
 }
 
-std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, double radius) const
+std::vector<SolidBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, double radius) const
 {
-  struct Minimum
-  {
-    Vec3 point;
-    double distance;
-    bool oneSided;
-    int source;
-  };
   std::vector<Minimum> minima;
   for (int i : SideTree.candidatesWithin(x, radius))
   {
@@ -132,38 +117,7 @@ std::vector<SweptBoundary::Contact> SweptBoundary::touchpoints(const Vec3& x, do
     if (d <= radius)
       minima.push_back({ foot, d, false, face == 0 ? ProfileFace0 : ProfileFace1 });
   }
-  std::sort(minima.begin(), minima.end(),
-    [](const Minimum& a, const Minimum& b) { return a.distance < b.distance; });
-  std::vector<Contact> out;
-  if (minima.empty())
-    return out;
-  // Distinctness is relative to the ball, not the solid: a ball of radius 1e-12 in a
-  // sheet 1e-12 thin (or of radius 1 in a bar 1e12 long) touches points that are
-  // distinct at its own scale.
-  const double scale = std::min(Size, std::max(minima.front().distance, 1e-300));
-  const double merge = 1e-7 * scale;
-  for (const Minimum& m : minima)
-  {
-    bool keep = true;
-    for (const Minimum& other : minima)
-    {
-      // A border minimum with a nearer minimum next to it (on the neighbouring patch) is
-      // only the border of that patch, not a touchpoint of the solid.
-      if (m.oneSided && other.distance < m.distance - 1e-13 * scale &&
-        (other.point - m.point).norm() < 0.05 * std::max(m.distance, merge))
-      {
-        keep = false;
-      }
-    }
-    // The valley test uses the ball's own radius (the nearest minimum), not the counting
-    // tolerance: near an osculating point two true touchpoints are only a hair apart.
-    const double valley = minima.front().distance + 1e-12 * scale;
-    for (const Contact& q : out)
-      keep = keep && !sameContact(x, valley, q.point, m.point, merge);
-    if (keep)
-      out.push_back({ m.point, m.distance, m.source });
-  }
-  return out;
+  return distinctContacts(std::move(minima), x);
 }
 
 } // namespace exactmat

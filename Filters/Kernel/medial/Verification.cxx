@@ -8,10 +8,10 @@
 namespace exactmat
 {
 
-MAT25DVerification verifyMAT25D(
-  const SweptBoundary& boundary, const MedialComplex& mat, int sheetStride)
+MedialVerification verifyMedialComplex(
+  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride)
 {
-  MAT25DVerification v;
+  MedialVerification v;
   const double size = boundary.size();
   const int n = static_cast<int>(mat.points.size());
   int sheetPoints = 0;
@@ -49,7 +49,7 @@ MAT25DVerification verifyMAT25D(
   return v;
 }
 
-std::string MAT25DVerification::problems(double distanceTolerance, const MedialComplex& mat,
+std::string MedialVerification::problems(double distanceTolerance, const MedialComplex& mat,
   const std::function<Vec3(const Vec3&)>& toUser) const
 {
   std::string out;

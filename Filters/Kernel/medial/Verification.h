@@ -1,11 +1,12 @@
 #pragma once
 /// @file Verification.h
-/// @brief Checks the MAT of a swept solid against its exact boundary (DESIGN.md §4),
-/// independently of the construction: global distance = radius at every point, and the
-/// number of distinct touchpoints of every ball that has a finite number of them.
+/// @brief Checks the MAT of a solid (swept or free-form) against its exact boundary
+/// (DESIGN.md §4), independently of the construction: global distance = radius at every
+/// point, and the number of distinct touchpoints of every ball that has a finite number
+/// of them.
 
-#include "mat25d/MedialComplex.h"
-#include "mat25d/SweptBoundary.h"
+#include "medial/MedialComplex.h"
+#include "medial/SolidBoundary.h"
 
 #include <functional>
 #include <string>
@@ -13,7 +14,7 @@
 namespace exactmat
 {
 
-struct MAT25DVerification
+struct MedialVerification
 {
   int points = 0;                ///< points checked
   double maxDistanceError = 0.0; ///< max |distance(X, boundary) − r| / solid size
@@ -44,7 +45,7 @@ struct MAT25DVerification
 /// solid's edges count as sheet points). Touchpoints count within r·(1 + 2e-9) + 1e-15·size: relative to the ball, so
 /// balls far smaller or larger than the solid (a 1e-12 thin sheet, a 1e12 long bar) are
 /// counted at their own scale.
-MAT25DVerification verifyMAT25D(
-  const SweptBoundary& boundary, const MedialComplex& mat, int sheetStride = 1);
+MedialVerification verifyMedialComplex(
+  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1);
 
 } // namespace exactmat

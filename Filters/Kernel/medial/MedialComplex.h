@@ -1,6 +1,6 @@
 #pragma once
 /// @file MedialComplex.h
-/// @brief The MAT of a solid as a cell complex (thesis §3.4): junction points, seams,
+/// @brief The MAT of a solid (swept or free-form) as a cell complex (thesis §3.4): junction points, seams,
 /// skeletal edges (curves) and medial sheets (triangulated surfaces), every point with its
 /// radius and classification.
 
@@ -56,7 +56,8 @@ struct MedialElement
   MedialElementType type = MedialElementType::Seam;
   std::vector<int> points;                  ///< vertex / polyline point ids
   std::vector<std::array<int, 3>> triangles; ///< sheets
-  /// The boundary entities the element is equidistant to (see MAT25D.h for the numbering).
+  /// The boundary entities the element is equidistant to (numbered by its producer: MAT25D.h
+  /// for swept solids, face indices for MAT3D.h).
   std::vector<int> governors;
   int profileSegment = -1; ///< the profile MAT segment (or node, for junctions) it comes from
 };

@@ -1,0 +1,553 @@
+#include "MAT3D.h"
+
+#include "common/Format.h"
+#include "common/InputError.h"
+#include "geometry/BoundingVolumeHierarchy.h"
+#include "geometry/ClosestPoint.h"
+
+#include <algorithm>
+#include <functional>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace exactmat
+{
+
+namespace
+{
+using Triplet = std::array<int, 3>;
+
+Triplet sorted(Triplet t)
+{
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+class Tracer
+{
+public:
+  Tracer(const Boundary3D& boundary, const MAT3DOptions& options)
+    : B(boundary)
+    , Options(options)
+    , Size(boundary.diagonal())
+    , System(Generators)
+  {
+    for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+      Generators.emplace_back(B, f);
+    std::vector<Box3> boxes;
+    for (const Face3D& f : B.faces())
+      boxes.push_back(f.patch.boundingBox());
+    Tree.build(boxes);
+    for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
+    {
+      const Edge3D& edge = B.edges()[e];
+      SideEdge[{ edge.faceA, edge.sideA }] = e;
+      SideEdge[{ edge.faceB, edge.sideB }] = e;
+    }
+    Solve = 1e-13 * Size;
+    Margin = 1e-10 * Size;
+    NodeMerge = 1e-8 * Size;
+  }
+
+  MAT3D run();
+
+private:
+  // Distance from x to face f (global closest point on its patch).
+  double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
+  std::vector<int> facesOutside(const MedialBall3D& ball, double radius) const;
+  bool empty(const MedialBall3D& ball) const;
+  int addNode(const MedialBall3D& ball, int vertex);
+  int findNode(const Vec3& x) const;
+  void startFrom(int node);
+  bool outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent) const;
+  void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent);
+  bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
+  MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
+  std::string describe(const MedialBall3D& ball) const;
+
+  const Boundary3D& B;
+  MAT3DOptions Options;
+  double Size;
+  std::vector<Generator3D> Generators;
+  BallSystem System;
+  BoundingVolumeHierarchy Tree;
+  std::map<std::pair<int, int>, int> SideEdge;
+  double Solve = 0.0, Margin = 0.0, NodeMerge = 0.0;
+
+  MAT3D Result;
+  std::set<std::pair<int, Triplet>> Traced;
+  std::vector<int> Queue;
+};
+
+std::string Tracer::describe(const MedialBall3D& ball) const
+{
+  // "the ball at (x, y, z) of radius r touching face 0, face 2 and face 4"
+  std::ostringstream s;
+  s << "the ball at " << format(ball.x) << " of radius " << ball.r << " touching ";
+  for (int i = 0; i < ball.size(); ++i)
+    s << (i == 0 ? "" : i + 1 == ball.size() ? " and " : ", ") << B.faces()[ball.generators[i]].name();
+  return s.str();
+}
+
+std::vector<int> Tracer::facesOutside(const MedialBall3D& ball, double radius) const
+{
+  std::vector<int> out;
+  for (int f : Tree.candidatesWithin(ball.x, radius))
+    if (std::find(ball.generators.begin(), ball.generators.end(), f) == ball.generators.end())
+      out.push_back(f);
+  return out;
+}
+
+// The ball is empty of every face outside its generators (those touch it by construction;
+// a planar or convex generator cannot also enter it — the curvature criterion for curved
+// faces that fold back is not applied yet).
+bool Tracer::empty(const MedialBall3D& ball) const
+{
+  const double radius = ball.r - Margin;
+  if (radius <= 0.0)
+    return true;
+  for (int f : facesOutside(ball, radius))
+    if (Generators[f].polygon() ? Generators[f].distance(ball.x) < radius
+                                : patchComesWithin(B.faces()[f].patch, ball.x, radius))
+      return false;
+  return true;
+}
+
+int Tracer::findNode(const Vec3& x) const
+{
+  for (size_t n = 0; n < Result.nodes.size(); ++n)
+    if ((Result.nodes[n].ball.x - x).norm() <= NodeMerge)
+      return static_cast<int>(n);
+  return -1;
+}
+
+int Tracer::addNode(const MedialBall3D& ball, int vertex)
+{
+  const int found = findNode(ball.x);
+  if (found >= 0)
+  {
+    // The same junction reached again: keep every face either arrival saw.
+    MedialBall3D& b = Result.nodes[found].ball;
+    for (int i = 0; i < ball.size(); ++i)
+      if (std::find(b.generators.begin(), b.generators.end(), ball.generators[i]) == b.generators.end())
+      {
+        b.generators.push_back(ball.generators[i]);
+        b.q.push_back(ball.q[i]);
+      }
+    return found;
+  }
+  Result.nodes.push_back({ ball, vertex });
+  Queue.push_back(static_cast<int>(Result.nodes.size()) - 1);
+  return static_cast<int>(Result.nodes.size()) - 1;
+}
+
+bool Tracer::step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const
+{
+  to = from;
+  const Eigen::VectorXd anchor = from.pack() + h * t;
+  to.unpack(anchor);
+  return System.correct(to, Solve, &t, &anchor);
+}
+
+// The seam of triplet t leaves the node along ±(null vector) when every other face of the
+// node recedes from the ball (first order: N_g·dX − dr > 0) and a short trial step keeps
+// the touchpoints on their faces and the ball clear of the node's other faces.
+bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent) const
+{
+  const MedialBall3D& nb = node.ball;
+  ball = MedialBall3D();
+  for (int g : t)
+  {
+    const auto it = std::find(nb.generators.begin(), nb.generators.end(), g);
+    ball.generators.push_back(g);
+    ball.q.push_back(nb.q[it - nb.generators.begin()]);
+  }
+  ball.x = nb.x;
+  ball.r = nb.r;
+  double separation = 1.0;
+  const Eigen::VectorXd t0 = System.tangent(ball, &separation);
+  if (separation > 1e-6)
+    return false; // no single seam of this triplet through the node
+  const double trial = std::min(1e-4, 0.01 * Options.maxStep) * Size;
+  for (int sign = 1; sign >= -1; sign -= 2)
+  {
+    const Eigen::VectorXd d = sign * t0;
+    const Vec3 dx = d.segment<3>(6);
+    const double dr = d(9);
+    if (node.vertex >= 0 && !(dr > 1e-9))
+      continue;
+    double worst = 1.0;
+    for (int i = 0; i < nb.size(); ++i)
+    {
+      const int g = nb.generators[i];
+      if (std::find(t.begin(), t.end(), g) != t.end())
+        continue;
+      const Touch3D touch = Generators[g].evaluate(nb.q[i]);
+      worst = std::min(worst, touch.normal.dot(dx) - dr);
+    }
+    if (worst < -1e-7)
+      continue;
+    MedialBall3D next;
+    if (!step(ball, d, trial, next) || next.r < 0.0)
+      continue;
+    bool inside = true;
+    for (int i = 0; i < 3 && inside; ++i)
+      inside = Generators[next.generators[i]].exitSide(next.q[i], Solve) < 0;
+    if (!inside)
+      continue;
+    bool clear = true;
+    for (int g : nb.generators)
+      if (std::find(t.begin(), t.end(), g) == t.end())
+        clear = clear && faceDistance(g, next.x) > next.r + Solve;
+    if (!clear)
+      continue;
+    tangent = d;
+    return true;
+  }
+  return false;
+}
+
+// A junction between `before` (empty) and the step h along t (not empty): bisection on the
+// step for the point where the nearest other face touches, then Newton on every face that
+// touches there.
+MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const
+{
+  MedialBall3D end;
+  step(before, t, h, end);
+  const std::vector<int> others = facesOutside(end, end.r + Margin);
+  auto gap = [&](const MedialBall3D& b) {
+    double d = Unbounded;
+    for (int f : others)
+      d = std::min(d, faceDistance(f, b.x));
+    return d - b.r;
+  };
+  double lo = 0.0, hi = h;
+  MedialBall3D at = before;
+  for (int k = 0; k < 80 && hi - lo > 1e-15 * Size; ++k)
+  {
+    const double mid = 0.5 * (lo + hi);
+    MedialBall3D m;
+    if (!step(before, t, mid, m))
+      fail("3D MAT: the seam through ", describe(before), " could not be continued while locating a junction");
+    if (gap(m) > 0.0)
+    {
+      lo = mid;
+      at = m;
+    }
+    else
+      hi = mid;
+  }
+  // Every face within reach joins the junction; Newton on the k-face system, repeated
+  // while another face turns out to touch the polished ball.
+  MedialBall3D j = at;
+  for (int round = 0; round < 6; ++round)
+  {
+    bool added = false;
+    for (int f : facesOutside(j, j.r + 1e-6 * Size))
+    {
+      const Vec3 foot = Generators[f].nearestPoint(j.x);
+      const double footDistance = (foot - j.x).norm();
+      // A touchpoint is a point, not a face: a face touching where a generator already
+      // does (coplanar faces meeting there, a smooth edge) adds no equation.
+      bool distinct = true;
+      for (int i = 0; i < j.size(); ++i)
+        distinct = distinct && (Generators[j.generators[i]].evaluate(j.q[i]).point - foot).norm() > 1e-7 * Size;
+      if (distinct && footDistance <= j.r + 1e-10 * Size)
+      {
+        j.generators.push_back(f);
+        j.q.push_back(Generators[f].parameterOf(foot));
+        added = true;
+      }
+    }
+    if (!added)
+      break;
+    MedialBall3D polished = j;
+    if (!System.correct(polished, Solve))
+      fail("3D MAT: the junction near ", describe(j), " could not be polished");
+    j = polished;
+  }
+  if (j.size() < 4)
+    fail("3D MAT: the seam through ", describe(before), " met a face that does not touch where it was located");
+  return j;
+}
+
+void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
+{
+  MAT3DSeam seam;
+  seam.faces = { ball.generators[0], ball.generators[1], ball.generators[2] };
+  seam.startNode = startNode;
+  seam.balls.push_back(ball); // the node's ball restricted to the triplet
+  const double tol = Options.tolerance * Size, hMax = Options.maxStep * Size;
+  double h = std::min(hMax, 1e-3 * Size);
+  Eigen::VectorXd previous = tangent;
+  int endNode = -1;
+  for (int n = 0; n < Options.maxStepsPerSeam && endNode < 0; ++n)
+  {
+    if (n + 1 == Options.maxStepsPerSeam)
+      fail("3D MAT: the seam through ", describe(ball), " did not end within ", Options.maxStepsPerSeam, " steps");
+    Eigen::VectorXd t = n == 0 ? tangent : System.tangent(ball);
+    if (t.dot(previous) < 0.0)
+      t = -t;
+    MedialBall3D next;
+    if (!step(ball, t, h, next))
+    {
+      h *= 0.5;
+      if (h < 1e-13 * Size)
+        fail("3D MAT: the seam through ", describe(ball), " cannot be continued (Newton does not converge)");
+      continue;
+    }
+    const Eigen::VectorXd predicted = ball.pack() + h * t;
+    const double error = (next.x - predicted.segment<3>(6)).norm() + std::abs(next.r - predicted(9));
+    if (error > tol && h > 1e-9 * Size)
+    {
+      h *= std::max(0.2, 0.8 * std::sqrt(tol / error));
+      continue;
+    }
+    // The radius vanishes: the seam ends at a convex vertex.
+    if (next.r < 0.0)
+    {
+      MedialBall3D v = ball;
+      if (!System.correct(v, Solve, nullptr, nullptr, 0.0))
+        fail("3D MAT: the seam through ", describe(ball), " could not be ended at radius 0");
+      const int node = findNode(v.x);
+      if (node < 0 || Result.nodes[node].vertex < 0)
+        fail("3D MAT: the seam through ", describe(ball), " reaches radius 0 at ", format(v.x),
+          ", which is not a convex vertex");
+      seam.balls.push_back(v);
+      endNode = node;
+      break;
+    }
+    // A touchpoint leaving its face: bisect for the crossing, then continue on the
+    // neighbour across a smooth edge.
+    int leaving = -1, side = -1;
+    for (int i = 0; i < 3 && leaving < 0; ++i)
+    {
+      side = Generators[next.generators[i]].exitSide(next.q[i], Solve);
+      if (side >= 0)
+        leaving = i;
+    }
+    if (leaving >= 0)
+    {
+      double lo = 0.0, hi = h;
+      MedialBall3D at = ball;
+      for (int k = 0; k < 80 && hi - lo > 1e-14 * Size; ++k)
+      {
+        const double mid = 0.5 * (lo + hi);
+        MedialBall3D m;
+        const bool solved = step(ball, t, mid, m);
+        const int crossed = solved ? Generators[m.generators[leaving]].exitSide(m.q[leaving], Solve) : -1;
+        if (solved && crossed < 0)
+        {
+          lo = mid;
+          at = m;
+        }
+        else
+        {
+          hi = mid;
+          if (crossed >= 0)
+            side = crossed; // the side crossed nearest the crossing
+        }
+      }
+      // A fourth face may touch before the touchpoint reaches the edge (always so at a
+      // convex edge): then the seam ends at that junction.
+      if (!empty(at))
+      {
+        const MedialBall3D j = junction(ball, t, lo);
+        endNode = addNode(j, -1);
+        seam.balls.push_back(j);
+        break;
+      }
+      const int face = at.generators[leaving];
+      const auto e = SideEdge.find({ face, side });
+      if (e == SideEdge.end())
+        fail("3D MAT: the seam through ", describe(at), " left ", B.faces()[face].name(), " through side ", side,
+          ", which no edge was matched to");
+      const Edge3D& edge = B.edges()[e->second];
+      if (edge.kind != VertexKind::Smooth)
+        fail("3D MAT: the seam through ", describe(at), " reached the ",
+          edge.kind == VertexKind::Reflex ? "reflex" : "convex", " edge between ",
+          B.faces()[edge.faceA].name(), " and ", B.faces()[edge.faceB].name(),
+          edge.kind == VertexKind::Reflex ? ": reflex edges are not supported yet" : " with a ball of radius > 0");
+      const int neighbour = edge.faceA == face ? edge.faceB : edge.faceA;
+      const Vec3 p = Generators[face].evaluate(at.q[leaving]).point;
+      at.generators[leaving] = neighbour;
+      at.q[leaving] = Generators[neighbour].parameterOf(p);
+      if (!System.correct(at, Solve))
+        fail("3D MAT: the seam through ", describe(at), " could not cross onto ", B.faces()[neighbour].name());
+      seam.balls.push_back(at);
+      ball = at;
+      previous = t;
+      continue;
+    }
+    if (!empty(next))
+    {
+      const MedialBall3D j = junction(ball, t, h);
+      endNode = addNode(j, -1);
+      seam.balls.push_back(j);
+      break;
+    }
+    seam.balls.push_back(next);
+    ball = next;
+    previous = t;
+    h = std::min(hMax, h * 1.5);
+  }
+  seam.endNode = endNode;
+  // The seam's direction at its end node, away from it (the end ball's first three
+  // generators are the arriving triplet).
+  MedialBall3D end = seam.balls.back();
+  end.generators.resize(3);
+  end.q.resize(3);
+  const Vec3 arrival = System.tangent(end).segment<3>(6);
+  const Vec3 back = seam.balls[seam.balls.size() - 2].x - end.x;
+  if (arrival.norm() > 0.0)
+    Result.nodes[endNode].directions.push_back(arrival.dot(back) >= 0.0 ? arrival.normalized() : Vec3(-arrival.normalized()));
+  // The triplet at the end (it may have changed across smooth edges) is traced from there.
+  Traced.insert({ endNode, sorted({ ball.generators[0], ball.generators[1], ball.generators[2] }) });
+  // Node balls as the seam's ends, so the polyline shares the node's point.
+  seam.balls.back().x = Result.nodes[endNode].ball.x;
+  seam.balls.back().r = Result.nodes[endNode].ball.r;
+  Result.seams.push_back(std::move(seam));
+  if (static_cast<int>(Result.seams.size()) > Options.maxSeams)
+    fail("3D MAT: more than ", Options.maxSeams, " seams");
+}
+
+void Tracer::startFrom(int node)
+{
+  const std::vector<int> faces = Result.nodes[node].ball.generators;
+  const int k = static_cast<int>(faces.size());
+  for (int a = 0; a < k; ++a)
+    for (int b = a + 1; b < k; ++b)
+      for (int c = b + 1; c < k; ++c)
+      {
+        const Triplet t = sorted({ faces[a], faces[b], faces[c] });
+        if (Traced.count({ node, t }))
+          continue;
+        MedialBall3D ball;
+        Eigen::VectorXd tangent;
+        if (!outgoing(Result.nodes[node], t, ball, tangent))
+          continue;
+        Traced.insert({ node, t });
+        // Two triplets with one seam: coplanar faces (a planar face split into triangles)
+        // both touch the ball leaving along their common edge. One seam per direction.
+        const Vec3 d = tangent.segment<3>(6).normalized();
+        bool taken = false;
+        for (const Vec3& other : Result.nodes[node].directions)
+          taken = taken || (other - d).norm() < 1e-6;
+        if (taken)
+          continue;
+        Result.nodes[node].directions.push_back(d);
+        trace(node, ball, tangent);
+      }
+}
+
+MAT3D Tracer::run()
+{
+  for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
+  {
+    const Vertex3D& vertex = B.vertices()[v];
+    if (vertex.kind == VertexKind::Reflex)
+      fail("3D MAT: vertex ", v, " at ", format(vertex.point), " is reflex: reflex corners are not supported yet");
+    if (vertex.kind != VertexKind::Convex)
+      continue;
+    MedialBall3D ball;
+    for (int e : vertex.edges)
+      for (int f : { B.edges()[e].faceA, B.edges()[e].faceB })
+        if (std::find(ball.generators.begin(), ball.generators.end(), f) == ball.generators.end())
+        {
+          ball.generators.push_back(f);
+          ball.q.push_back(Generators[f].parameterOf(vertex.point));
+        }
+    ball.x = vertex.point;
+    ball.r = 0.0;
+    addNode(ball, v);
+  }
+  for (const Edge3D& e : B.edges())
+    if (e.kind == VertexKind::Reflex)
+      fail("3D MAT: the edge between ", B.faces()[e.faceA].name(), " and ", B.faces()[e.faceB].name(),
+        " is reflex: reflex edges are not supported yet");
+  if (Result.nodes.empty())
+    fail("3D MAT: the solid has no convex vertex: starting elsewhere is not supported yet");
+  for (size_t i = 0; i < Queue.size(); ++i)
+    startFrom(Queue[i]);
+  // Every face bounds some sheet, and (for the solids traced here) every sheet has a seam
+  // on its border: a face no seam touches means a part of the MAT this tracer cannot
+  // reach yet (sheets bounded only by circles of contact, rims or skeletal edges: the
+  // cylinder's disks). Say so rather than return a partial MAT.
+  // Faces meeting at smooth edges count as one (a planar face split into triangles: a
+  // triangle in its middle may be touched only by sheet points).
+  const int faces = static_cast<int>(B.faces().size());
+  std::vector<int> group(faces);
+  for (int f = 0; f < faces; ++f)
+    group[f] = f;
+  std::function<int(int)> root = [&](int f) { return group[f] == f ? f : group[f] = root(group[f]); };
+  for (const Edge3D& e : B.edges())
+    if (e.kind == VertexKind::Smooth)
+      group[root(e.faceA)] = root(e.faceB);
+  std::vector<bool> touched(faces, false);
+  for (const MAT3DSeam& seam : Result.seams)
+    for (const MedialBall3D& ball : seam.balls)
+      for (int g : ball.generators)
+        touched[root(g)] = true;
+  for (int f = 0; f < faces; ++f)
+    if (!touched[root(f)])
+      fail("3D MAT: no seam touches ", B.faces()[f].name(),
+        ": its sheets are bounded only by edges, circles of contact or skeletal edges, which are not traced yet");
+  return std::move(Result);
+}
+} // namespace
+
+int MAT3D::junctionCount() const
+{
+  return static_cast<int>(std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0; }));
+}
+
+MedialComplex MAT3D::complex() const
+{
+  MedialComplex c;
+  for (const MAT3DNode& n : nodes)
+  {
+    MedialPoint3D p;
+    p.x = n.ball.x;
+    p.radius = n.ball.r;
+    p.type = n.vertex >= 0 ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
+    p.contacts = n.vertex >= 0 ? 0 : n.ball.size();
+    c.points.push_back(p);
+    if (n.vertex < 0)
+    {
+      MedialElement e;
+      e.type = MedialElementType::Junction;
+      e.points = { static_cast<int>(c.points.size()) - 1 };
+      e.governors = n.ball.generators;
+      c.elements.push_back(e);
+    }
+  }
+  for (const MAT3DSeam& s : seams)
+  {
+    MedialElement e;
+    e.type = MedialElementType::Seam;
+    e.governors = { s.faces[0], s.faces[1], s.faces[2] };
+    e.points.push_back(s.startNode);
+    for (size_t i = 1; i + 1 < s.balls.size(); ++i)
+    {
+      MedialPoint3D p;
+      p.x = s.balls[i].x;
+      p.radius = s.balls[i].r;
+      p.type = MedialPoint3DType::Seam;
+      p.contacts = 3;
+      c.points.push_back(p);
+      e.points.push_back(static_cast<int>(c.points.size()) - 1);
+    }
+    e.points.push_back(s.endNode);
+    c.elements.push_back(e);
+  }
+  return c;
+}
+
+MAT3D computeMAT3D(const Boundary3D& boundary, const MAT3DOptions& options)
+{
+  return Tracer(boundary, options).run();
+}
+
+} // namespace exactmat

@@ -1,0 +1,68 @@
+#pragma once
+/// @file MAT3D.h
+/// @brief The seams and junctions of the MAT of a solid bounded by rational Bézier faces
+/// (thesis ch. 6), traced from the convex vertices.
+///
+/// Nodes are the balls where seams start and end: convex vertices (radius 0; every face at
+/// the vertex touches) and junctions (four or more faces touch). From a node every triplet
+/// of its faces whose seam leaves the node into the solid is traced, once: the seam's
+/// direction is the null vector of the triplet's ball equations (BallSystem), valid when
+/// every other face of the node recedes from the ball along it. A seam is followed by
+/// pseudo-arclength continuation with steps controlled by the chord error; after every step
+/// the ball is tested for emptiness against the faces outside the triplet (exact Bernstein
+/// sign test through the BVH); a ball that is not empty brackets a junction, found by
+/// bisection and polished by Newton on the four-(or more-)face system. A seam ends at a
+/// junction or at a convex vertex (r = 0); a touchpoint crossing a smooth edge continues on
+/// the neighbouring face.
+///
+/// Supported today: solids whose faces meet at convex and smooth edges, with at least one
+/// convex vertex (polyhedra and free-form solids such as the pillow). Reflex edges and
+/// corners, skeletal edges (the curvature criterion) and solids without a convex vertex are
+/// reported as InputError naming what is missing, never traced wrongly.
+
+#include "mat3d/BallSystem.h"
+#include "medial/MedialComplex.h"
+
+#include <array>
+#include <vector>
+
+namespace exactmat
+{
+
+struct MAT3DOptions
+{
+  double tolerance = 1e-4; ///< chord deviation of a seam's polyline, fraction of the size
+  double maxStep = 0.05;   ///< longest step along a seam (junction-check spacing), fraction
+  int maxSeams = 100000;
+  int maxStepsPerSeam = 200000;
+};
+
+struct MAT3DNode
+{
+  MedialBall3D ball;     ///< every face touching (r = 0 at a convex vertex)
+  int vertex = -1;       ///< the convex vertex, or −1 for a junction
+  Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
+};
+
+struct MAT3DSeam
+{
+  std::array<int, 3> faces{ { -1, -1, -1 } }; ///< the triplet at the seam's start
+  int startNode = -1, endNode = -1;
+  std::vector<MedialBall3D> balls; ///< from start node to end node, both included
+};
+
+struct MAT3D
+{
+  std::vector<MAT3DNode> nodes;
+  std::vector<MAT3DSeam> seams;
+
+  int junctionCount() const;
+  /// Points and elements: a Junction element per junction, a Seam polyline per seam
+  /// (sharing the node points), governors = the seam's start triplet of face indices.
+  MedialComplex complex() const;
+};
+
+/// Throws InputError for what is not supported (see the file comment), naming the entity.
+MAT3D computeMAT3D(const Boundary3D& boundary, const MAT3DOptions& options = {});
+
+} // namespace exactmat

@@ -1,0 +1,34 @@
+#pragma once
+/// @file PatchBoundary.h
+/// @brief The exact boundary of a solid given as a Boundary3D (rational Bézier faces), for
+/// checking its MAT: global distance and distinct touchpoints through a BVH of the faces.
+
+#include "brep/Boundary3D.h"
+#include "geometry/BoundingVolumeHierarchy.h"
+#include "medial/SolidBoundary.h"
+
+namespace exactmat
+{
+
+class PatchBoundary : public SolidBoundary
+{
+public:
+  /// `boundary` must outlive this object.
+  explicit PatchBoundary(const Boundary3D& boundary);
+
+  double distance(const Vec3& x) const override;
+  /// Contact sources are face indices.
+  std::vector<Contact> touchpoints(const Vec3& x, double radius) const override;
+  double size() const override { return Size; }
+  double aspect() const override { return Aspect; }
+
+protected:
+  Vec3 nearestPoint(const Vec3& x) const override;
+
+private:
+  const Boundary3D* Boundary;
+  BoundingVolumeHierarchy Tree;
+  double Size = 1.0, Aspect = 1.0;
+};
+
+} // namespace exactmat

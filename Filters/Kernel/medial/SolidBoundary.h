@@ -1,0 +1,63 @@
+#pragma once
+/// @file SolidBoundary.h
+/// @brief The exact boundary of a solid as the verification of any 3D MAT sees it (DESIGN.md
+/// §4): the global distance from a point, and the distinct touchpoints of a ball. One
+/// interface for the swept solids of 2.5D (SweptBoundary) and the free-form solids of 3D
+/// (PatchBoundary), so both are checked by the same code (medial/Verification.h).
+
+#include "common/Types.h"
+
+#include <vector>
+
+namespace exactmat
+{
+
+class SolidBoundary
+{
+public:
+  virtual ~SolidBoundary() = default;
+
+  /// A local minimum of the distance from a point to the boundary.
+  struct Contact
+  {
+    Vec3 point = Vec3::Zero();
+    double distance = 0.0;
+    int source = -1; ///< the face (numbering of the implementation)
+  };
+
+  /// Global distance from x to the boundary.
+  virtual double distance(const Vec3& x) const = 0;
+
+  /// The distinct touchpoints of the ball of radius `radius` about x: local minima of the
+  /// distance within `radius`, nearest first.
+  virtual std::vector<Contact> touchpoints(const Vec3& x, double radius) const = 0;
+
+  /// Bounding-box diagonal of the solid.
+  virtual double size() const = 0;
+  /// The bounding box's longest edge over its shortest.
+  virtual double aspect() const { return 1.0; }
+
+protected:
+  /// A local minimum found on one face; `oneSided` when it lies on the face's border.
+  struct Minimum
+  {
+    Vec3 point;
+    double distance;
+    bool oneSided;
+    int source;
+  };
+
+  /// The boundary point nearest x (for the valley test between two close minima).
+  virtual Vec3 nearestPoint(const Vec3& x) const = 0;
+
+  /// The distinct contacts among the minima of every face about x: a border minimum that
+  /// the neighbouring face undercuts is not one, and two minima close together are one
+  /// when the boundary between them stays inside the ball (a flat valley), two when it
+  /// bulges out.
+  std::vector<Contact> distinctContacts(std::vector<Minimum> minima, const Vec3& x) const;
+
+private:
+  bool sameContact(const Vec3& x, double radius, const Vec3& a, const Vec3& b, double merge) const;
+};
+
+} // namespace exactmat

@@ -1,0 +1,361 @@
+// The seams and junctions of solids bounded by free-form faces (thesis ch. 6) against closed
+// forms, an independent brute-force junction search, and the exact boundary.
+#include "common/InputError.h"
+#include "mat3d/MAT3D.h"
+#include "mat3d/PatchBoundary.h"
+#include "medial/Verification.h"
+#include "shapes/Catalogue.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace exactmat;
+
+namespace
+{
+constexpr double VerifiedDistanceTolerance = 1e-9;
+
+// A polyhedron from vertices and faces (vertex index loops, any orientation): triangles as
+// linear triangles, planar quadrilaterals as bilinear patches, larger polygons as a fan of
+// coplanar triangles about their centroid (edges between them are smooth and flat).
+std::vector<PatchPiece> polyhedron(const Vec3List& v, const std::vector<std::vector<int>>& faces)
+{
+  std::vector<PatchPiece> pieces;
+  auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int entity) {
+    TriangleNet net;
+    net.degree = 1;
+    net.points.resize(3);
+    net.points[TriangleNet::index(1, 0, 0)] = homogeneous(a, 1);
+    net.points[TriangleNet::index(1, 1, 0)] = homogeneous(b, 1);
+    net.points[TriangleNet::index(1, 0, 1)] = homogeneous(c, 1);
+    PatchPiece piece;
+    piece.triangle = net;
+    piece.patch = BezierPatch::fromTriangle(net);
+    piece.entity = entity;
+    pieces.push_back(piece);
+  };
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    const std::vector<int>& l = faces[f];
+    const int entity = static_cast<int>(f);
+    if (l.size() == 3)
+      triangle(v[l[0]], v[l[1]], v[l[2]], entity);
+    else if (l.size() == 4)
+    {
+      PatchPiece piece;
+      piece.patch = BezierPatch(1, 1,
+        Vec4List{ homogeneous(v[l[0]], 1), homogeneous(v[l[3]], 1), homogeneous(v[l[1]], 1),
+          homogeneous(v[l[2]], 1) });
+      piece.entity = entity;
+      pieces.push_back(piece);
+    }
+    else
+    {
+      Vec3 c = Vec3::Zero();
+      for (int i : l)
+        c += v[i];
+      c /= static_cast<double>(l.size());
+      for (size_t i = 0; i < l.size(); ++i)
+        triangle(c, v[l[i]], v[l[(i + 1) % l.size()]], entity);
+    }
+  }
+  return pieces;
+}
+
+std::vector<PatchPiece> box(double a, double b, double c)
+{
+  Vec3List v;
+  for (int i = 0; i < 8; ++i)
+    v.push_back(Vec3((i & 1) ? a : -a, (i & 2) ? b : -b, (i & 4) ? c : -c));
+  return polyhedron(v, { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
+                          { 1, 3, 7, 5 } });
+}
+
+// A truncated pyramid: a convex n-gon (vertices on an ellipse at random angles) at z = 0
+// and its image under a homothety (ratio lambda, centre moved up by (sx, sy, h)): the
+// sides are planar trapezoids, the solid convex.
+std::vector<PatchPiece> frustum(std::mt19937& rng, int n)
+{
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<double> angle(n);
+  for (int i = 0; i < n; ++i)
+    angle[i] = 2.0 * M_PI * (i + 0.15 + 0.7 * U(rng)) / n;
+  const double ax = 1.0 + U(rng), ay = 0.6 + U(rng), lambda = 0.3 + 0.6 * U(rng), h = 0.5 + 1.5 * U(rng);
+  const Vec3 shift(0.3 * (U(rng) - 0.5), 0.3 * (U(rng) - 0.5), h);
+  Vec3List v;
+  for (int i = 0; i < n; ++i)
+    v.push_back(Vec3(ax * std::cos(angle[i]), ay * std::sin(angle[i]), 0.0));
+  for (int i = 0; i < n; ++i)
+    v.push_back(shift + lambda * v[i]);
+  std::vector<std::vector<int>> faces;
+  std::vector<int> bottom, top;
+  for (int i = 0; i < n; ++i)
+  {
+    bottom.push_back(n - 1 - i);
+    top.push_back(n + i);
+    faces.push_back({ i, (i + 1) % n, n + (i + 1) % n, n + i });
+  }
+  faces.push_back(bottom);
+  faces.push_back(top);
+  return polyhedron(v, faces);
+}
+
+struct Traced
+{
+  std::unique_ptr<Boundary3D> boundary;
+  MAT3D mat;
+};
+
+Traced trace(const std::vector<PatchPiece>& pieces, const MAT3DOptions& options = {})
+{
+  Traced t;
+  t.boundary = std::make_unique<Boundary3D>(Boundary3D::build(pieces));
+  t.mat = computeMAT3D(*t.boundary, options);
+  return t;
+}
+
+// Every point checked against the exact boundary (distance = radius, touchpoint count);
+// every seam joins two nodes; one connected graph.
+void expectVerified(const Traced& t, const std::string& what)
+{
+  const PatchBoundary boundary(*t.boundary);
+  const MedialComplex c = t.mat.complex();
+  const MedialVerification v = verifyMedialComplex(boundary, c);
+  EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what;
+  EXPECT_EQ(v.contactMismatches, 0) << what << ": "
+                                    << v.problems(VerifiedDistanceTolerance, c, [](const Vec3& x) { return x; });
+  EXPECT_GT(v.contactsChecked, 0) << what;
+  std::vector<int> parent(t.mat.nodes.size());
+  for (size_t i = 0; i < parent.size(); ++i)
+    parent[i] = static_cast<int>(i);
+  std::function<int(int)> root = [&](int i) { return parent[i] == i ? i : parent[i] = root(parent[i]); };
+  for (const MAT3DSeam& s : t.mat.seams)
+  {
+    ASSERT_GE(s.startNode, 0) << what;
+    ASSERT_GE(s.endNode, 0) << what;
+    parent[root(s.startNode)] = root(s.endNode);
+  }
+  int components = 0;
+  for (size_t i = 0; i < parent.size(); ++i)
+    components += root(static_cast<int>(i)) == static_cast<int>(i);
+  EXPECT_EQ(components, 1) << what;
+}
+
+std::vector<int> degrees(const MAT3D& m)
+{
+  std::vector<int> d(m.nodes.size(), 0);
+  for (const MAT3DSeam& s : m.seams)
+  {
+    ++d[s.startNode];
+    ++d[s.endNode];
+  }
+  return d;
+}
+
+// Brute force, independent of the tracer: every four faces of a convex polyhedron give a
+// linear system n_i·X − r = n_i·P_i (inward unit normals); a solution with r > 0 whose
+// ball is empty (no face plane cuts it, and global distance = r) is a junction.
+Vec3List bruteForceJunctions(const Boundary3D& b, std::vector<double>* radii)
+{
+  const PatchBoundary boundary(b);
+  const int n = static_cast<int>(b.faces().size());
+  std::vector<Vec3> normal(n), point(n);
+  for (int f = 0; f < n; ++f)
+  {
+    normal[f] = -b.faces()[f].patch.normal(0.5, 0.5);
+    point[f] = b.faces()[f].patch.evaluate(0.5, 0.5);
+  }
+  Vec3List found;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (int k = j + 1; k < n; ++k)
+        for (int l = k + 1; l < n; ++l)
+        {
+          Eigen::Matrix4d a;
+          Eigen::Vector4d rhs;
+          const int f[4] = { i, j, k, l };
+          for (int m = 0; m < 4; ++m)
+          {
+            a.row(m) << normal[f[m]].transpose(), -1.0;
+            rhs(m) = normal[f[m]].dot(point[f[m]]);
+          }
+          Eigen::FullPivLU<Eigen::Matrix4d> lu(a);
+          if (lu.rank() < 4)
+            continue;
+          const Eigen::Vector4d s = lu.solve(rhs);
+          const Vec3 x = s.head<3>();
+          const double r = s(3);
+          if (!(r > 1e-9 * b.diagonal()))
+            continue;
+          // Convex solid: the ball is empty only if no face plane cuts it (cheap, first).
+          bool clear = true;
+          for (int m = 0; m < n && clear; ++m)
+            clear = normal[m].dot(x - point[m]) >= r - 1e-9 * b.diagonal();
+          if (!clear || std::abs(boundary.distance(x) - r) > 1e-9 * b.diagonal())
+            continue;
+          // Every one of the four faces must really touch (its foot inside the face).
+          bool ok = true;
+          for (int m = 0; m < 4; ++m)
+            ok = ok && std::abs((closestPoint(b.faces()[f[m]].patch, x).distance) - r) <= 1e-9 * b.diagonal();
+          bool known = false;
+          for (const Vec3& y : found)
+            known = known || (y - x).norm() < 1e-7 * b.diagonal();
+          if (ok && !known)
+          {
+            found.push_back(x);
+            if (radii)
+              radii->push_back(r);
+          }
+        }
+  return found;
+}
+
+void expectJunctionsMatchBruteForce(const Traced& t, const std::string& what)
+{
+  const Vec3List expected = bruteForceJunctions(*t.boundary, nullptr);
+  EXPECT_EQ(t.mat.junctionCount(), static_cast<int>(expected.size())) << what;
+  for (const Vec3& x : expected)
+  {
+    double nearest = INFINITY;
+    for (const MAT3DNode& n : t.mat.nodes)
+      if (n.vertex < 0)
+        nearest = std::min(nearest, (n.ball.x - x).norm());
+    EXPECT_LE(nearest, 1e-9 * t.boundary->diagonal()) << what << ": junction at " << x.transpose();
+  }
+}
+} // namespace
+
+TEST(MAT3D, BoxJunctionsAndSeamsAreTheClosedForm)
+{
+  // Half-extents a > b > c: junctions (±(a−c), ±(b−c), 0) with r = c, four faces each;
+  // 8 seams from the corners and 4 between the junctions.
+  const double a = 2.0, b = 1.5, c = 1.0;
+  const Traced t = trace(box(a, b, c));
+  EXPECT_EQ(t.mat.junctionCount(), 4);
+  EXPECT_EQ(t.mat.seams.size(), 12u);
+  const std::vector<int> d = degrees(t.mat);
+  for (size_t i = 0; i < t.mat.nodes.size(); ++i)
+  {
+    const MAT3DNode& n = t.mat.nodes[i];
+    if (n.vertex >= 0)
+    {
+      EXPECT_EQ(d[i], 1);
+      continue;
+    }
+    EXPECT_NEAR(std::abs(n.ball.x.x()), a - c, 1e-12);
+    EXPECT_NEAR(std::abs(n.ball.x.y()), b - c, 1e-12);
+    EXPECT_NEAR(n.ball.x.z(), 0.0, 1e-12);
+    EXPECT_NEAR(n.ball.r, c, 1e-12);
+    EXPECT_EQ(n.ball.size(), 4);
+    EXPECT_EQ(d[i], 4);
+  }
+  expectVerified(t, "box");
+  expectJunctionsMatchBruteForce(t, "box");
+}
+
+TEST(MAT3D, CatalogueBoxAgrees)
+{
+  const Traced t = trace(patchPieces(makeShape("box").surfaces));
+  EXPECT_EQ(t.mat.junctionCount(), 4);
+  EXPECT_EQ(t.mat.seams.size(), 12u);
+  expectVerified(t, "catalogue box");
+}
+
+TEST(MAT3D, CubeHasOneDegenerateJunction)
+{
+  // All six faces touch the ball at the centre: one junction, eight seams into it.
+  const Traced t = trace(box(1.0, 1.0, 1.0));
+  ASSERT_EQ(t.mat.junctionCount(), 1);
+  EXPECT_EQ(t.mat.seams.size(), 8u);
+  for (const MAT3DNode& n : t.mat.nodes)
+    if (n.vertex < 0)
+    {
+      EXPECT_LE(n.ball.x.norm(), 1e-12);
+      EXPECT_NEAR(n.ball.r, 1.0, 1e-12);
+      EXPECT_EQ(n.ball.size(), 6);
+    }
+  expectVerified(t, "cube");
+}
+
+TEST(MAT3D, RegularTetrahedronMeetsAtTheIncentre)
+{
+  const Vec3List v{ Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1) };
+  const Traced t = trace(polyhedron(v, { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } }));
+  ASSERT_EQ(t.mat.junctionCount(), 1);
+  EXPECT_EQ(t.mat.seams.size(), 4u);
+  const double edge = (v[0] - v[1]).norm();
+  for (const MAT3DNode& n : t.mat.nodes)
+    if (n.vertex < 0)
+    {
+      EXPECT_LE(n.ball.x.norm(), 1e-12);
+      EXPECT_NEAR(n.ball.r, edge / (2.0 * std::sqrt(6.0)), 1e-12);
+    }
+  expectVerified(t, "tetrahedron");
+}
+
+TEST(MAT3D, RandomFrustumsAgreeWithBruteForce)
+{
+  // Truncated pyramids over random convex polygons (the caps split into coplanar fans: seams
+  // cross their flat edges): the junctions of a brute-force search over every four faces,
+  // every point verified, one connected graph, junctions of degree 4 (or more when
+  // degenerate), corners of degree 1.
+  std::mt19937 rng(7);
+  for (int k = 0; k < 12; ++k)
+  {
+    const int n = 3 + k % 6;
+    const std::vector<PatchPiece> pieces = frustum(rng, n);
+    const std::string what = "frustum " + std::to_string(k) + " (" + std::to_string(n) + " sides)";
+    Traced t;
+    try
+    {
+      t = trace(pieces);
+    }
+    catch (const InputError& e)
+    {
+      ADD_FAILURE() << what << ": " << e.what();
+      continue;
+    }
+    expectVerified(t, what);
+    expectJunctionsMatchBruteForce(t, what);
+    const std::vector<int> d = degrees(t.mat);
+    for (size_t i = 0; i < t.mat.nodes.size(); ++i)
+      EXPECT_EQ(d[i], t.mat.nodes[i].vertex >= 0 ? 1 : 4) << what << ", node " << i;
+  }
+}
+
+TEST(MAT3D, PillowHasCurvedSeamsIntoTheCentre)
+{
+  // A cube with bicubic faces bulging outwards: by symmetry the eight seams from the corners
+  // meet at the centre, where all six faces touch.
+  const Traced t = trace(patchPieces(makeShape("pillow").surfaces));
+  ASSERT_EQ(t.mat.junctionCount(), 1);
+  EXPECT_EQ(t.mat.seams.size(), 8u);
+  expectVerified(t, "pillow");
+}
+
+TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
+{
+  auto message = [](const std::vector<PatchPiece>& pieces) {
+    try
+    {
+      trace(pieces);
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A cylinder: its MAT has no seam (cones and the axis): not traced yet, and said so.
+  EXPECT_NE(message(patchPieces(makeShape("cylinder").surfaces)).find("no seam touches"), std::string::npos);
+  // An L-shaped prism has a reflex edge.
+  const Vec3List v{ Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0),
+    Vec3(0, 0, 1), Vec3(2, 0, 1), Vec3(2, 1, 1), Vec3(1, 1, 1), Vec3(1, 2, 1), Vec3(0, 2, 1) };
+  // Each cap as two convex quadrilaterals (their common edge is flat: smooth).
+  std::vector<std::vector<int>> faces{ { 3, 2, 1, 0 }, { 5, 4, 3, 0 }, { 6, 7, 8, 9 }, { 6, 9, 10, 11 } };
+  for (int i = 0; i < 6; ++i)
+    faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
+  EXPECT_NE(message(polyhedron(v, faces)).find("reflex"), std::string::npos);
+}
