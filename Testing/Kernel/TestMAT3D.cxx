@@ -1,5 +1,6 @@
 // The seams and junctions of solids bounded by free-form faces (thesis ch. 6) against closed
 // forms, an independent brute-force junction search, and the exact boundary.
+#include "brep/NormalisePieces.h"
 #include "common/InputError.h"
 #include "mat3d/MAT3D.h"
 #include "mat3d/PatchBoundary.h"
@@ -102,18 +103,55 @@ std::vector<PatchPiece> frustum(std::mt19937& rng, int n)
   return polyhedron(v, faces);
 }
 
+// The MAT in the normalised frame (as the filter computes it) and the map to the user's.
 struct Traced
 {
   std::unique_ptr<Boundary3D> boundary;
   MAT3D mat;
+
+  struct Ball
+  {
+    Vec3 x;
+    double r;
+    int touchpoints;
+  };
+  // The junctions in the user's frame.
+  std::vector<Ball> junctions() const
+  {
+    std::vector<Ball> out;
+    const Normalisation& n = boundary->userFrame();
+    for (const MAT3DNode& node : mat.nodes)
+      if (node.vertex < 0)
+        out.push_back({ n.toUser(node.ball.x), n.lengthToUser(node.ball.r), node.ball.size() });
+    return out;
+  }
 };
 
 Traced trace(const std::vector<PatchPiece>& pieces, const MAT3DOptions& options = {})
 {
   Traced t;
-  t.boundary = std::make_unique<Boundary3D>(Boundary3D::build(pieces));
+  t.boundary = std::make_unique<Boundary3D>(buildNormalised(pieces));
   t.mat = computeMAT3D(*t.boundary, options);
   return t;
+}
+
+// A rigid motion and scaling of every control point.
+std::vector<PatchPiece> moved(std::vector<PatchPiece> pieces, const Eigen::Matrix3d& rotation, double scale,
+  const Vec3& offset)
+{
+  auto map = [&](Vec4List& net) {
+    for (Vec4& h : net)
+      h = homogeneous(scale * (rotation * euclidean(h)) + offset, h.w());
+  };
+  for (PatchPiece& p : pieces)
+  {
+    Vec4List net = p.patch.homogeneousNet();
+    map(net);
+    p.patch = BezierPatch(p.patch.degreeU(), p.patch.degreeV(), std::move(net));
+    if (p.triangle)
+      map(p.triangle->points);
+  }
+  return pieces;
 }
 
 // Every point checked against the exact boundary (distance = radius, touchpoint count);
@@ -122,7 +160,8 @@ void expectVerified(const Traced& t, const std::string& what)
 {
   const PatchBoundary boundary(*t.boundary);
   const MedialComplex c = t.mat.complex();
-  const MedialVerification v = verifyMedialComplex(boundary, c);
+  const MedialVerification v =
+    verifyMedialComplex(boundary, c, 1, std::max(1e-15, 64.0 * t.boundary->userFrame().inputRounding()));
   EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what;
   EXPECT_EQ(v.contactMismatches, 0) << what << ": "
                                     << v.problems(VerifiedDistanceTolerance, c, [](const Vec3& x) { return x; });
@@ -181,7 +220,9 @@ Vec3List bruteForceJunctions(const Boundary3D& b, std::vector<double>* radii)
             a.row(m) << normal[f[m]].transpose(), -1.0;
             rhs(m) = normal[f[m]].dot(point[f[m]]);
           }
+          // Faces of one plane (a cap split into triangles) give no junction together.
           Eigen::FullPivLU<Eigen::Matrix4d> lu(a);
+          lu.setThreshold(1e-9);
           if (lu.rank() < 4)
             continue;
           const Eigen::Vector4d s = lu.solve(rhs);
@@ -221,7 +262,7 @@ void expectJunctionsMatchBruteForce(const Traced& t, const std::string& what)
     double nearest = INFINITY;
     for (const MAT3DNode& n : t.mat.nodes)
       if (n.vertex < 0)
-        nearest = std::min(nearest, (n.ball.x - x).norm());
+        nearest = std::min(nearest, (n.ball.x - x).norm()); // both in the unit frame
     EXPECT_LE(nearest, 1e-9 * t.boundary->diagonal()) << what << ": junction at " << x.transpose();
   }
 }
@@ -237,19 +278,14 @@ TEST(MAT3D, BoxJunctionsAndSeamsAreTheClosedForm)
   EXPECT_EQ(t.mat.seams.size(), 12u);
   const std::vector<int> d = degrees(t.mat);
   for (size_t i = 0; i < t.mat.nodes.size(); ++i)
+    EXPECT_EQ(d[i], t.mat.nodes[i].vertex >= 0 ? 1 : 4);
+  for (const Traced::Ball& j : t.junctions())
   {
-    const MAT3DNode& n = t.mat.nodes[i];
-    if (n.vertex >= 0)
-    {
-      EXPECT_EQ(d[i], 1);
-      continue;
-    }
-    EXPECT_NEAR(std::abs(n.ball.x.x()), a - c, 1e-12);
-    EXPECT_NEAR(std::abs(n.ball.x.y()), b - c, 1e-12);
-    EXPECT_NEAR(n.ball.x.z(), 0.0, 1e-12);
-    EXPECT_NEAR(n.ball.r, c, 1e-12);
-    EXPECT_EQ(n.ball.size(), 4);
-    EXPECT_EQ(d[i], 4);
+    EXPECT_NEAR(std::abs(j.x.x()), a - c, 1e-12);
+    EXPECT_NEAR(std::abs(j.x.y()), b - c, 1e-12);
+    EXPECT_NEAR(j.x.z(), 0.0, 1e-12);
+    EXPECT_NEAR(j.r, c, 1e-12);
+    EXPECT_EQ(j.touchpoints, 4);
   }
   expectVerified(t, "box");
   expectJunctionsMatchBruteForce(t, "box");
@@ -269,13 +305,10 @@ TEST(MAT3D, CubeHasOneDegenerateJunction)
   const Traced t = trace(box(1.0, 1.0, 1.0));
   ASSERT_EQ(t.mat.junctionCount(), 1);
   EXPECT_EQ(t.mat.seams.size(), 8u);
-  for (const MAT3DNode& n : t.mat.nodes)
-    if (n.vertex < 0)
-    {
-      EXPECT_LE(n.ball.x.norm(), 1e-12);
-      EXPECT_NEAR(n.ball.r, 1.0, 1e-12);
-      EXPECT_EQ(n.ball.size(), 6);
-    }
+  const Traced::Ball j = t.junctions()[0];
+  EXPECT_LE(j.x.norm(), 1e-12);
+  EXPECT_NEAR(j.r, 1.0, 1e-12);
+  EXPECT_EQ(j.touchpoints, 6);
   expectVerified(t, "cube");
 }
 
@@ -286,12 +319,10 @@ TEST(MAT3D, RegularTetrahedronMeetsAtTheIncentre)
   ASSERT_EQ(t.mat.junctionCount(), 1);
   EXPECT_EQ(t.mat.seams.size(), 4u);
   const double edge = (v[0] - v[1]).norm();
-  for (const MAT3DNode& n : t.mat.nodes)
-    if (n.vertex < 0)
-    {
-      EXPECT_LE(n.ball.x.norm(), 1e-12);
-      EXPECT_NEAR(n.ball.r, edge / (2.0 * std::sqrt(6.0)), 1e-12);
-    }
+  const Traced::Ball j = t.junctions()[0];
+  EXPECT_LE(j.x.norm(), 1e-12);
+  EXPECT_NEAR(j.r, edge / (2.0 * std::sqrt(6.0)), 1e-12);
+  EXPECT_EQ(j.touchpoints, 4);
   expectVerified(t, "tetrahedron");
 }
 
@@ -358,4 +389,42 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
   for (int i = 0; i < 6; ++i)
     faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
   EXPECT_NE(message(polyhedron(v, faces)).find("reflex"), std::string::npos);
+}
+
+TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
+{
+  // The same junctions (moved with the solid) and every point verified, for a box and random
+  // frustums rotated, scaled by 1e-6 … 1e6 and moved up to 1e6 × their size.
+  std::mt19937 rng(11);
+  const std::vector<std::vector<PatchPiece>> solids{ box(2.0, 1.5, 1.0), frustum(rng, 5), frustum(rng, 9) };
+  const struct
+  {
+    double scale, offset;
+  } placements[] = { { 1.0, 0.0 }, { 1e-6, 3e-6 }, { 1e6, 0.0 }, { 1.0, 1e4 }, { 3.0, 2e6 } };
+  for (size_t s = 0; s < solids.size(); ++s)
+  {
+    const Traced reference = trace(solids[s]);
+    const std::vector<Traced::Ball> expected = reference.junctions();
+    for (const auto& p : placements)
+    {
+      const Eigen::Matrix3d rotation =
+        Eigen::AngleAxisd(0.3 + s, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+      const Vec3 offset = p.offset * Vec3(0.6, -0.8, 0.5);
+      const std::string what = "solid " + std::to_string(s) + " scaled by " + std::to_string(p.scale) +
+        ", moved by " + std::to_string(p.offset);
+      const Traced t = trace(moved(solids[s], rotation, p.scale, offset));
+      expectVerified(t, what);
+      ASSERT_EQ(t.mat.junctionCount(), static_cast<int>(expected.size())) << what;
+      EXPECT_EQ(t.mat.seams.size(), reference.mat.seams.size()) << what;
+      for (const Traced::Ball& e : expected)
+      {
+        const Vec3 x = p.scale * (rotation * e.x) + offset;
+        double nearest = INFINITY;
+        for (const Traced::Ball& j : t.junctions())
+          if (j.touchpoints == e.touchpoints && std::abs(j.r - p.scale * e.r) <= 1e-9 * p.scale * 4.0)
+            nearest = std::min(nearest, (j.x - x).norm());
+        EXPECT_LE(nearest, 1e-9 * p.scale * 4.0) << what;
+      }
+    }
+  }
 }

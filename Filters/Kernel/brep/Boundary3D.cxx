@@ -115,6 +115,7 @@ Boundary3D Boundary3D::build(const std::vector<PatchPiece>& pieces, const Option
     fail("empty input: the boundary has no faces");
   }
   Boundary3D b;
+  b.UserFrame = options.userFrame;
   Box3 all;
   for (size_t i = 0; i < pieces.size(); ++i)
   {

@@ -59,6 +59,9 @@ public:
   {
     double pointTolerance = 1e-9;   ///< fraction of the bounding-box diagonal
     double angularTolerance = 1e-6; ///< radians; edges with normals closer are smooth
+    /// The map from the user's frame to the frame the pieces are given in (identity when
+    /// they are the user's): messages and userPoint() report places where the user sees them.
+    Normalisation userFrame;
   };
 
   /// Throws InputError for an empty input, invalid patches (NaN, weights ≤ 0, collapsed to a
@@ -74,6 +77,8 @@ public:
   const std::vector<Edge3D>& edges() const { return Edges; }
   const std::vector<Vertex3D>& vertices() const { return Vertices; }
   double diagonal() const { return Diagonal; }
+  const Normalisation& userFrame() const { return UserFrame; }
+  Vec3 userPoint(const Vec3& p) const { return UserFrame.toUser(p); }
   double volume() const { return Volume; }
   int countEdges(VertexKind kind) const;
   int countVertices(VertexKind kind) const;
@@ -88,6 +93,7 @@ private:
   std::vector<Vertex3D> Vertices;
   double Diagonal = 0.0;
   double Volume = 0.0;
+  Normalisation UserFrame;
 };
 
 /// Volume enclosed by oriented faces: (1/3)∮ S·n dA by Gauss quadrature (8×8 per patch).

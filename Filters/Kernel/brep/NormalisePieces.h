@@ -5,6 +5,7 @@
 /// unit size.
 
 #include "brep/Boundary2D.h"
+#include "brep/Boundary3D.h"
 #include "common/Normalisation.h"
 
 #include <vector>
@@ -31,5 +32,12 @@ Normalisation normalise(std::vector<CurvePiece>& pieces);
 /// The B-rep of `pieces` built in the normalised frame, with that frame as its user frame
 /// (Boundary2D::userPoint): how every MAT filter takes its input.
 Boundary2D buildNormalised(std::vector<CurvePiece> pieces, Boundary2D::Options options = {});
+
+/// The same for the faces of a solid: weights, then the control points of every patch (and
+/// triangle) taken to the unit frame.
+void normaliseWeights(std::vector<PatchPiece>& pieces);
+Normalisation normalisationOf(const std::vector<PatchPiece>& pieces);
+Normalisation normalise(std::vector<PatchPiece>& pieces);
+Boundary3D buildNormalised(std::vector<PatchPiece> pieces, Boundary3D::Options options = {});
 
 } // namespace exactmat

@@ -12,11 +12,11 @@ namespace
 {
 // A face is planar when every control point lies within rounding of the plane through the
 // patch's centre with its normal there (weights do not bend a planar net out of its plane).
-bool isPlanar(const BezierPatch& patch, const Vec3& origin, const Vec3& normal, double size)
+bool isPlanar(const BezierPatch& patch, const Vec3& origin, const Vec3& normal, double tolerance)
 {
   for (int i = 0; i <= patch.degreeU(); ++i)
     for (int j = 0; j <= patch.degreeV(); ++j)
-      if (std::abs((patch.controlPoint(i, j) - origin).dot(normal)) > 1e-12 * size)
+      if (std::abs((patch.controlPoint(i, j) - origin).dot(normal)) > tolerance)
         return false;
   return true;
 }
@@ -33,7 +33,10 @@ Generator3D::Generator3D(const Boundary3D& boundary, int face)
   if (outward.norm() > 0.0)
   {
     Inward = -outward.normalized();
-    Planar = isPlanar(patch, Origin, Inward, boundary.diagonal());
+    // Planar to the input's rounding: a polyhedron far from the origin has its faces' corners
+    // rounded off their plane by that much, and is still a polyhedron.
+    const double tolerance = std::max(1e-12, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
+    Planar = isPlanar(patch, Origin, Inward, tolerance);
   }
   for (int side = 0; side < 4; ++side)
   {

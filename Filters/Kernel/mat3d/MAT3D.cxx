@@ -6,6 +6,7 @@
 #include "geometry/ClosestPoint.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <cmath>
 #include <map>
@@ -254,7 +255,11 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
       bool distinct = true;
       for (int i = 0; i < j.size(); ++i)
         distinct = distinct && (Generators[j.generators[i]].evaluate(j.q[i]).point - foot).norm() > 1e-7 * Size;
-      if (distinct && footDistance <= j.r + 1e-10 * Size)
+      // And the ball touches the face there (the centre lies on its normal), not just
+      // comes near its border: a coplanar neighbour's edge a hair from a touchpoint.
+      const Vec3 normal = Generators[f].evaluate(Generators[f].parameterOf(foot)).normal;
+      const bool tangent = (j.x - foot).cross(normal).norm() <= 1e-8 * footDistance;
+      if (distinct && tangent && footDistance <= j.r + 1e-10 * Size)
       {
         j.generators.push_back(f);
         j.q.push_back(Generators[f].parameterOf(foot));
@@ -268,6 +273,11 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
       fail("3D MAT: the junction near ", describe(j), " could not be polished");
     j = polished;
   }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+  std::fprintf(stderr, "junction from %s: %s (bisected at lo %.3g of h %.3g)\n", describe(before).c_str(), describe(j).c_str(), lo, h);
+  for (int i = 0; i < j.size(); ++i)
+    std::fprintf(stderr, "   gen %d: d-r %.3g\n", j.generators[i], faceDistance(j.generators[i], j.x) - j.r);
+#endif
   if (j.size() < 4)
     fail("3D MAT: the seam through ", describe(before), " met a face that does not touch where it was located");
   return j;
@@ -283,6 +293,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
   double h = std::min(hMax, 1e-3 * Size);
   Eigen::VectorXd previous = tangent;
   int endNode = -1;
+  int stalled = 0; // crossings in a row that made no progress along the seam
   for (int n = 0; n < Options.maxStepsPerSeam && endNode < 0; ++n)
   {
     if (n + 1 == Options.maxStepsPerSeam)
@@ -330,6 +341,8 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
     }
     if (leaving >= 0)
     {
+      // The first crossing of any of the three (another touchpoint may leave its face
+      // before the one seen leaving at the end of the step).
       double lo = 0.0, hi = h;
       MedialBall3D at = ball;
       for (int k = 0; k < 80 && hi - lo > 1e-14 * Size; ++k)
@@ -337,8 +350,14 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
         const double mid = 0.5 * (lo + hi);
         MedialBall3D m;
         const bool solved = step(ball, t, mid, m);
-        const int crossed = solved ? Generators[m.generators[leaving]].exitSide(m.q[leaving], Solve) : -1;
-        if (solved && crossed < 0)
+        int out = -1, crossed = -1;
+        for (int i = 0; i < 3 && solved && out < 0; ++i)
+        {
+          crossed = Generators[m.generators[i]].exitSide(m.q[i], Solve);
+          if (crossed >= 0)
+            out = i;
+        }
+        if (solved && out < 0)
         {
           lo = mid;
           at = m;
@@ -346,8 +365,11 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
         else
         {
           hi = mid;
-          if (crossed >= 0)
+          if (out >= 0)
+          {
+            leaving = out;
             side = crossed; // the side crossed nearest the crossing
+          }
         }
       }
       // A fourth face may touch before the touchpoint reaches the edge (always so at a
@@ -376,6 +398,13 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
       at.q[leaving] = Generators[neighbour].parameterOf(p);
       if (!System.correct(at, Solve))
         fail("3D MAT: the seam through ", describe(at), " could not cross onto ", B.faces()[neighbour].name());
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "  crossed from %d to %s\n", face, describe(at).c_str());
+#endif
+      stalled = lo > 0.0 ? 0 : stalled + 1;
+      if (stalled > 8)
+        fail("3D MAT: the seam through ", describe(at), " keeps crossing edges without moving (",
+          B.faces()[face].name(), " and its neighbours)");
       seam.balls.push_back(at);
       ball = at;
       previous = t;
@@ -388,6 +417,12 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
       seam.balls.push_back(j);
       break;
     }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "  step h %.3g to %s; exits", h, describe(next).c_str());
+    for (int i = 0; i < 3; ++i)
+      std::fprintf(stderr, " %d", Generators[next.generators[i]].exitSide(next.q[i], Solve));
+    std::fprintf(stderr, "\n");
+#endif
     seam.balls.push_back(next);
     ball = next;
     previous = t;

@@ -9,7 +9,7 @@ namespace exactmat
 {
 
 MedialVerification verifyMedialComplex(
-  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride)
+  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride, double inputRounding)
 {
   MedialVerification v;
   const double size = boundary.size();
@@ -36,7 +36,7 @@ MedialVerification verifyMedialComplex(
       continue;
     ++v.contactsChecked;
     const int count = static_cast<int>(
-      boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + 1e-15 * size).size());
+      boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size).size());
     if (count != p.contacts)
     {
       if (v.contactMismatches++ == 0)

@@ -42,10 +42,13 @@ struct MedialVerification
 
 /// Checks every point of the curves (junctions, seams, seam ends, skeletal edges, centre
 /// curves) and every `sheetStride`-th sheet point (1 = all; radius-0 points on the
-/// solid's edges count as sheet points). Touchpoints count within r·(1 + 2e-9) + 1e-15·size: relative to the ball, so
-/// balls far smaller or larger than the solid (a 1e-12 thin sheet, a 1e12 long bar) are
-/// counted at their own scale.
+/// solid's edges count as sheet points). Touchpoints count within
+/// r·(1 + 2e-9) + inputRounding·size: relative to the ball, so balls far smaller or larger
+/// than the solid (a 1e-12 thin sheet, a 1e12 long bar) are counted at their own scale,
+/// plus what the input is known to (a part far from the origin: its coordinates' rounding,
+/// Normalisation::inputRounding, against which a tiny ball's touchpoints cannot be told).
 MedialVerification verifyMedialComplex(
-  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1);
+  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1,
+  double inputRounding = 1e-15);
 
 } // namespace exactmat
