@@ -2,6 +2,7 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATComplexOutput.h"
 #include "vtkMATVerificationReport.h"
 
 #include "brep/NormalisePieces.h"
@@ -71,84 +72,6 @@ std::string governorNames(const Boundary2D& profile, const std::vector<int>& gov
   return out;
 }
 
-void writeComplex(const MedialComplex& mat, const Boundary2D& profile, const Normalisation& frame,
-  vtkPolyData* out)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mat.points.size()));
-  vtkNew<vtkDoubleArray> radius;
-  radius->SetName(arrays::Radius);
-  radius->SetNumberOfTuples(points->GetNumberOfPoints());
-  vtkNew<vtkIntArray> type, touchpoints;
-  type->SetName(arrays::PointType);
-  type->SetNumberOfTuples(points->GetNumberOfPoints());
-  touchpoints->SetName(arrays::Touchpoints);
-  touchpoints->SetNumberOfTuples(points->GetNumberOfPoints());
-  for (size_t i = 0; i < mat.points.size(); ++i)
-  {
-    const MedialPoint3D& p = mat.points[i];
-    points->SetPoint(static_cast<vtkIdType>(i), frame.toUser(p.x).data());
-    radius->SetValue(static_cast<vtkIdType>(i), frame.lengthToUser(p.radius));
-    type->SetValue(static_cast<vtkIdType>(i), static_cast<int>(p.type));
-    touchpoints->SetValue(static_cast<vtkIdType>(i), p.contacts);
-  }
-
-  // vtkPolyData orders cells verts, lines, polys: cell data is filled in that order.
-  vtkNew<vtkCellArray> verts, lines, polys;
-  vtkNew<vtkIntArray> elementType, elementId, segment;
-  vtkNew<vtkStringArray> governors;
-  elementType->SetName(arrays::ElementType);
-  elementId->SetName(arrays::ElementId);
-  segment->SetName(arrays::SegmentId);
-  governors->SetName(arrays::Governors);
-  auto addCellData = [&](size_t e) {
-    const MedialElement& el = mat.elements[e];
-    elementType->InsertNextValue(static_cast<int>(el.type));
-    elementId->InsertNextValue(static_cast<int>(e));
-    segment->InsertNextValue(el.profileSegment);
-    governors->InsertNextValue(governorNames(profile, el.governors));
-  };
-  for (int pass = 0; pass < 3; ++pass)
-  {
-    for (size_t e = 0; e < mat.elements.size(); ++e)
-    {
-      const MedialElement& el = mat.elements[e];
-      std::vector<vtkIdType> ids(el.points.begin(), el.points.end());
-      if (pass == 0 && el.type == MedialElementType::Junction)
-      {
-        verts->InsertNextCell(1, ids.data());
-        addCellData(e);
-      }
-      else if (pass == 1 && !el.points.empty() && el.type != MedialElementType::Junction)
-      {
-        lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-        addCellData(e);
-      }
-      else if (pass == 2)
-      {
-        for (const auto& t : el.triangles)
-        {
-          const vtkIdType tri[3] = { t[0], t[1], t[2] };
-          polys->InsertNextCell(3, tri);
-          addCellData(e);
-        }
-      }
-    }
-  }
-  out->SetPoints(points);
-  out->SetVerts(verts);
-  out->SetLines(lines);
-  out->SetPolys(polys);
-  out->GetPointData()->AddArray(radius);
-  out->GetPointData()->SetScalars(radius);
-  out->GetPointData()->AddArray(type);
-  out->GetPointData()->AddArray(touchpoints);
-  out->GetCellData()->AddArray(elementType);
-  out->GetCellData()->AddArray(elementId);
-  out->GetCellData()->AddArray(segment);
-  out->GetCellData()->AddArray(governors);
-}
 } // namespace
 
 int vtkMAT25DFilter::RequestData(
@@ -202,7 +125,9 @@ int vtkMAT25DFilter::RequestData(
     options3.progress = [this](double f) { this->UpdateProgress(0.5 + 0.3 * f); };
     const exactmat::MedialComplex mat = exactmat::computeMAT25D(generators, graph, map, options3);
     this->ConstructionSeconds = secondsSince(t0);
-    writeComplex(mat, profile, frame, output);
+    exactmat::writeMedialComplex(mat, frame,
+      [&profile](const exactmat::MedialElement& e) { return governorNames(profile, e.governors); }, true,
+      output);
 
     using ET = exactmat::MedialElementType;
     this->NumberOfJunctions = mat.count(ET::Junction);

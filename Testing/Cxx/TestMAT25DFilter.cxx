@@ -24,34 +24,6 @@ using namespace exactmat;
 
 namespace
 {
-// Largest |distance(point, solid) − Radius| / size over every `stride`-th output point; the
-// solid's faces come from the source's grid.
-double worstRadiusError(vtkUnstructuredGrid* solid, vtkPolyData* mat, int stride)
-{
-  const std::vector<PatchPiece> faces = patchPiecesFromGrid(solid);
-  std::vector<Box3> boxes;
-  Box3 all;
-  for (const PatchPiece& f : faces)
-  {
-    boxes.push_back(f.patch.boundingBox());
-    all.extend(boxes.back());
-  }
-  BoundingVolumeHierarchy tree;
-  tree.build(boxes);
-  vtkDataArray* radius = mat->GetPointData()->GetArray(arrays::Radius);
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < mat->GetNumberOfPoints(); i += stride)
-  {
-    double x[3];
-    mat->GetPoint(i, x);
-    const Vec3 p(x[0], x[1], x[2]);
-    double d = 0.0;
-    tree.nearest(p, [&](int k) { return closestPoint(faces[k].patch, p).distance; }, &d);
-    worst = std::max(worst, std::abs(d - radius->GetTuple1(i)));
-  }
-  return worst / all.diagonal().norm();
-}
-
 struct Pipeline
 {
   vtkNew<vtkNURBSSource> profile, solid;

@@ -48,6 +48,10 @@ public:
       SideEdge[{ edge.faceB, edge.sideB }] = e;
     }
     Solve = 1e-13 * Size;
+    // Five or more faces touch one ball only as far as the input is exact (a cube moved far
+    // from the origin is a cluster of junctions 1e-10 apart): their least-squares ball is
+    // accepted to the input's rounding.
+    Degenerate = std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * Size;
     Margin = 1e-10 * Size;
     NodeMerge = 1e-8 * Size;
   }
@@ -67,6 +71,7 @@ private:
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
   std::string describe(const MedialBall3D& ball) const;
+  void reportProgress();
 
   const Boundary3D& B;
   MAT3DOptions Options;
@@ -75,10 +80,12 @@ private:
   BallSystem System;
   BoundingVolumeHierarchy Tree;
   std::map<std::pair<int, int>, int> SideEdge;
-  double Solve = 0.0, Margin = 0.0, NodeMerge = 0.0;
+  double Solve = 0.0, Degenerate = 0.0, Margin = 0.0, NodeMerge = 0.0;
 
   MAT3D Result;
   std::set<std::pair<int, Triplet>> Traced;
+  std::vector<bool> Reached; // faces some seam has touched (for progress)
+  int ReachedCount = 0;
   std::vector<int> Queue;
 };
 
@@ -269,7 +276,7 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
     if (!added)
       break;
     MedialBall3D polished = j;
-    if (!System.correct(polished, Solve))
+    if (!System.correct(polished, polished.size() > 4 ? Degenerate : Solve))
       fail("3D MAT: the junction near ", describe(j), " could not be polished");
     j = polished;
   }
@@ -448,6 +455,21 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
     fail("3D MAT: more than ", Options.maxSeams, " seams");
 }
 
+void Tracer::reportProgress()
+{
+  if (!Options.progress)
+    return;
+  Reached.resize(B.faces().size(), false);
+  for (const MedialBall3D& ball : Result.seams.back().balls)
+    for (int g : ball.generators)
+      if (!Reached[g])
+      {
+        Reached[g] = true;
+        ++ReachedCount;
+      }
+  Options.progress(static_cast<double>(ReachedCount) / static_cast<double>(B.faces().size()));
+}
+
 void Tracer::startFrom(int node)
 {
   const std::vector<int> faces = Result.nodes[node].ball.generators;
@@ -474,6 +496,7 @@ void Tracer::startFrom(int node)
           continue;
         Result.nodes[node].directions.push_back(d);
         trace(node, ball, tangent);
+        reportProgress();
       }
 }
 

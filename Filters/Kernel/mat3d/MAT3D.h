@@ -24,6 +24,7 @@
 #include "medial/MedialComplex.h"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace exactmat
@@ -35,6 +36,8 @@ struct MAT3DOptions
   double maxStep = 0.05;   ///< longest step along a seam (junction-check spacing), fraction
   int maxSeams = 100000;
   int maxStepsPerSeam = 200000;
+  /// Called after every seam with the fraction of faces reached so far (0 … 1).
+  std::function<void(double)> progress;
 };
 
 struct MAT3DNode

@@ -1,0 +1,111 @@
+/**
+ * @class   vtkMAT3DFilter
+ * @brief   The seams and junctions of the medial axis transform of a solid bounded by exact
+ *          rational Bézier faces (Ramanathan's thesis, ch. 6).
+ *
+ * Input: a closed solid as a vtkUnstructuredGrid of surface cells — rational Bézier
+ * quadrilaterals and triangles (`VTK_BEZIER_QUADRILATERAL`, `VTK_BEZIER_TRIANGLE`) and
+ * planar `VTK_QUAD` / `VTK_TRIANGLE` faces — conforming along shared edges, in either
+ * orientation (vtkNURBSSource's 3D shapes, or a reader's output).
+ *
+ * Output: vtkPolyData whose points are exact MAT points: junctions (vertex cells; four or
+ * more faces touch the ball) and seams (polylines from node to node; three faces touch),
+ * which share their end points with the junctions and the convex vertices they start from:
+ * the polydata is the seam graph. Point data `Radius`, `PointType` (1 seam, 2 junction,
+ * 3 seam end at a convex vertex, radius 0), `Touchpoints` (distinct boundary points the
+ * ball touches; 0 at radius 0). Cell data `ElementType` (0 junction, 1 seam), `ElementId`,
+ * `Governors` (the FaceIds of the faces the element is equidistant to, e.g. "0,2,4").
+ *
+ * The seams are traced from the convex vertices by continuation on the exact ball
+ * equations (every touchpoint parameter, centre and radius unknown), steps controlled by
+ * Tolerance; after every step the ball is tested for emptiness against the whole exact
+ * boundary, and junctions are located by bisection and polished to rounding. Computed in
+ * a normalised frame (centred, unit size): the result does not depend on where the solid
+ * sits or how large it is.
+ *
+ * VerifyOutput checks every output point against the exact boundary (global distance =
+ * Radius, the number of touchpoints); a failure warns, sets VerificationPassed false and
+ * the output's field data (`VerificationStatus`, `VerificationReport`).
+ *
+ * @warning Supported today: solids whose edges are convex or smooth, with at least one
+ * convex vertex — polyhedra (convex ones; non-convex ones have reflex edges) and free-form
+ * solids such as the catalogue's pillow. Reflex edges and corners, skeletal edges (the
+ * curvature criterion), solids without a convex vertex (ellipsoid, cylinder, torus) and the
+ * medial sheets (vtkSheetInterpolator) are not yet: the filter fails with an error naming
+ * the face or edge, never with a partial MAT.
+ */
+#ifndef vtkMAT3DFilter_h
+#define vtkMAT3DFilter_h
+
+#include "ExactMATFiltersMedialModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT3DFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMAT3DFilter* New();
+  vtkTypeMacro(vtkMAT3DFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Largest deviation of a seam's polyline from the seam, as a fraction of the solid's
+  /// size (adaptive steps). Default 1e-4.
+  vtkSetClampMacro(Tolerance, double, 1e-12, 1e-1);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// Longest step along a seam, a fraction of the solid's size: the spacing of the ball-
+  /// emptiness checks that find junctions. Default 0.05.
+  vtkSetClampMacro(MaximumStep, double, 1e-6, 0.5);
+  vtkGetMacro(MaximumStep, double);
+  ///@}
+
+  ///@{
+  /// Verification against the exact boundary (default on) and its bound on |distance −
+  /// Radius| / size (default 1e-9).
+  vtkSetMacro(VerifyOutput, bool);
+  vtkGetMacro(VerifyOutput, bool);
+  vtkBooleanMacro(VerifyOutput, bool);
+  vtkSetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationPassed, bool);
+  ///@}
+
+  ///@{
+  /// Results of the last run.
+  vtkGetMacro(NumberOfJunctions, int);
+  vtkGetMacro(NumberOfSeams, int);
+  vtkGetMacro(NumberOfVerifiedPoints, int);
+  vtkGetMacro(MaximumVerifiedError, double);
+  vtkGetMacro(NumberOfTouchpointMismatches, int);
+  vtkGetMacro(TracingSeconds, double);
+  vtkGetMacro(VerificationSeconds, double);
+  ///@}
+
+protected:
+  vtkMAT3DFilter();
+  ~vtkMAT3DFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Tolerance = 1e-4;
+  double MaximumStep = 0.05;
+  bool VerifyOutput = true;
+  double VerificationTolerance = 1e-9;
+  bool VerificationPassed = true;
+  int NumberOfJunctions = 0;
+  int NumberOfSeams = 0;
+  int NumberOfVerifiedPoints = 0;
+  double MaximumVerifiedError = 0.0;
+  int NumberOfTouchpointMismatches = 0;
+  double TracingSeconds = 0.0;
+  double VerificationSeconds = 0.0;
+
+private:
+  vtkMAT3DFilter(const vtkMAT3DFilter&) = delete;
+  void operator=(const vtkMAT3DFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,135 @@
+// vtkMAT3DFilter through the VTK pipeline, checked against the exact faces vtkNURBSSource
+// makes (read back from the grid independently of the filter).
+#include "vtkExactMATArrayNames.h"
+#include "vtkMAT3DFilter.h"
+#include "vtkNURBSSource.h"
+
+#include "TestHelpers.h"
+
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTransform.h>
+#include <vtkTransformFilter.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <gtest/gtest.h>
+
+using namespace exactmat;
+
+TEST(vtkMAT3DFilter, BoxGivesTheClosedFormGraph)
+{
+  // Box 4 × 3 × 2 centred at the origin: junctions (±1, ±0.5, 0) with radius 1.
+  vtkNew<vtkNURBSSource> box;
+  box->SetShapeName("box");
+  box->SetWidth(4.0);
+  box->SetHeight(3.0);
+  box->SetLength(2.0);
+  vtkNew<vtkMAT3DFilter> mat;
+  mat->SetInputConnection(box->GetOutputPort());
+  auto errors = ErrorRecorder::watch(mat);
+  mat->Update();
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  vtkPolyData* out = mat->GetOutput();
+  EXPECT_EQ(mat->GetNumberOfJunctions(), 4);
+  EXPECT_EQ(mat->GetNumberOfSeams(), 12);
+  EXPECT_EQ(out->GetNumberOfVerts(), 4);
+  EXPECT_EQ(out->GetNumberOfLines(), 12);
+  EXPECT_TRUE(mat->GetVerificationPassed());
+  EXPECT_LE(mat->GetMaximumVerifiedError(), 1e-9);
+  EXPECT_EQ(mat->GetNumberOfTouchpointMismatches(), 0);
+  EXPECT_EQ(mat->GetNumberOfVerifiedPoints(), out->GetNumberOfPoints());
+  EXPECT_LE(worstRadiusError(box->GetOutput(), out, 1), 1e-9);
+  vtkDataArray* radius = out->GetPointData()->GetArray(arrays::Radius);
+  vtkDataArray* type = out->GetPointData()->GetArray(arrays::PointType);
+  vtkDataArray* touch = out->GetPointData()->GetArray(arrays::Touchpoints);
+  ASSERT_TRUE(radius && type && touch);
+  int junctions = 0, ends = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    if (type->GetTuple1(i) == 2)
+    {
+      ++junctions;
+      EXPECT_NEAR(std::abs(x[0]), 1.0, 1e-12);
+      EXPECT_NEAR(std::abs(x[1]), 0.5, 1e-12);
+      EXPECT_NEAR(x[2], 0.0, 1e-12);
+      EXPECT_NEAR(radius->GetTuple1(i), 1.0, 1e-12);
+      EXPECT_EQ(touch->GetTuple1(i), 4);
+    }
+    else if (type->GetTuple1(i) == 3)
+    {
+      ++ends;
+      EXPECT_EQ(radius->GetTuple1(i), 0.0);
+    }
+    else
+      EXPECT_EQ(touch->GetTuple1(i), 3);
+  }
+  EXPECT_EQ(junctions, 4);
+  EXPECT_EQ(ends, 8);
+  auto* governors = vtkStringArray::SafeDownCast(out->GetCellData()->GetAbstractArray(arrays::Governors));
+  ASSERT_TRUE(governors);
+  EXPECT_EQ(governors->GetNumberOfTuples(), 16);
+  EXPECT_NE(out->GetFieldData()->GetArray(arrays::VerificationStatus), nullptr);
+}
+
+TEST(vtkMAT3DFilter, PillowMovedFarAwayIsTheSame)
+{
+  // The free-form pillow, and the same solid rotated and moved to 1e6 × its size: one
+  // junction of six touchpoints, eight seams, verified, radius the same.
+  double reference = 0.0;
+  for (const double offset : { 0.0, 3e6 })
+  {
+    vtkNew<vtkNURBSSource> pillow;
+    pillow->SetShapeName("pillow");
+    vtkNew<vtkTransform> motion;
+    motion->Translate(offset, -0.5 * offset, 0.25 * offset);
+    motion->RotateWXYZ(30.0, 1.0, 2.0, 3.0);
+    vtkNew<vtkTransformFilter> moved;
+    moved->SetTransform(motion);
+    moved->SetInputConnection(pillow->GetOutputPort());
+    moved->Update();
+    vtkNew<vtkMAT3DFilter> mat;
+    mat->SetInputConnection(moved->GetOutputPort());
+    auto errors = ErrorRecorder::watch(mat);
+    mat->Update();
+    ASSERT_TRUE(errors->Messages.empty()) << offset << ": " << errors->Messages;
+    EXPECT_EQ(mat->GetNumberOfJunctions(), 1);
+    EXPECT_EQ(mat->GetNumberOfSeams(), 8);
+    EXPECT_TRUE(mat->GetVerificationPassed()) << offset;
+    vtkPolyData* out = mat->GetOutput();
+    EXPECT_LE(worstRadiusError(vtkUnstructuredGrid::SafeDownCast(moved->GetOutput()), out, 3), 1e-9);
+    vtkDataArray* type = out->GetPointData()->GetArray(arrays::PointType);
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      if (type->GetTuple1(i) == 2)
+      {
+        const double r = out->GetPointData()->GetArray(arrays::Radius)->GetTuple1(i);
+        if (offset == 0.0)
+          reference = r;
+        else
+          EXPECT_NEAR(r, reference, 1e-9 * reference);
+      }
+  }
+}
+
+TEST(vtkMAT3DFilter, UnsupportedAndWrongInputSayWhy)
+{
+  auto message = [](vtkAlgorithm* source) {
+    vtkNew<vtkMAT3DFilter> mat;
+    mat->SetInputConnection(source->GetOutputPort());
+    auto errors = ErrorRecorder::watch(mat);
+    mat->Update();
+    EXPECT_EQ(mat->GetOutput()->GetNumberOfPoints(), 0);
+    return errors->Messages;
+  };
+  vtkNew<vtkNURBSSource> cylinder, rectangle;
+  cylinder->SetShapeName("cylinder");
+  rectangle->SetShapeName("rectangle");
+  const std::string c = message(cylinder);
+  EXPECT_NE(c.find("no seam touches"), std::string::npos) << c;
+  const std::string r = message(rectangle);
+  EXPECT_NE(r.find("no surface cells"), std::string::npos) << r;
+}
