@@ -125,6 +125,41 @@ class ExactmatCLI(unittest.TestCase):
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertEqual(summary_value(r.stdout, "junctions"), 0)
 
+    def test_3d_default_solid_box_and_png(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            r = run("3d", "--png", "pillow.png", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("pillow", r.stdout)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 1)
+            self.assertEqual(summary_value(r.stdout, "seams"), 8)
+            self.assertIn("verification        passed", r.stdout)
+            png = vtkPNGReader()
+            png.SetFileName(os.path.join(tmp, "pillow.png"))
+            png.Update()
+            self.assertGreater(png.GetOutput().GetDimensions()[0], 100)
+            r = run("3d", "--shape", "box", "-o", "box.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(tmp, "box.vtp"))
+            reader.Update()
+            out = reader.GetOutput()
+            self.assertEqual(out.GetNumberOfVerts(), 4)
+            self.assertEqual(out.GetNumberOfLines(), 12)
+            radius = out.GetPointData().GetArray("Radius")
+            kinds = out.GetPointData().GetArray("PointType")
+            # The catalogue box is 4 x 2 x 3: junctions at (+-1, 0, +-0.5)... with radius 1.
+            junction_radii = [radius.GetValue(i) for i in range(out.GetNumberOfPoints()) if kinds.GetValue(i) == 2]
+            self.assertEqual(len(junction_radii), 4)
+            for value in junction_radii:
+                self.assertAlmostEqual(value, 1.0, places=12)
+            # A solid the 3D tracer cannot do yet is refused with exit 1 and the reason.
+            r = run("3d", "--shape", "cylinder", "-o", "c.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 1)
+            self.assertIn("no seam touches", r.stderr)
+            r = run("3d", "--shape", "rectangle", "-o", "r.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 1)
+            self.assertIn("no surface cells", r.stderr)
+
     def test_sweep_errors(self):
         r = run("extrude")
         self.assertEqual(r.returncode, 2)

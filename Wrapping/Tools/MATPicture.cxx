@@ -193,13 +193,16 @@ bool writeSolidMATPicture(vtkUnstructuredGrid* solid, vtkPolyData* mat, const st
   vtkNew<vtkActor> sheetActor;
   sheetActor->SetMapper(sheetMapper);
   sheetActor->GetProperty()->SetOpacity(0.85);
-  vtkNew<vtkPolyDataMapper> curveMapper;
-  curveMapper->SetInputData(curves);
-  curveMapper->ScalarVisibilityOff();
+  // Without sheets (the 3D seam graph) the seams themselves carry the radius colours.
+  const bool seamsOnly = mat->GetNumberOfPolys() == 0;
+  if (seamsOnly)
+    curves->GetPointData()->PassData(mat->GetPointData());
+  vtkSmartPointer<vtkPolyDataMapper> curveMapper = radiusMapper(curves, range);
+  curveMapper->SetScalarVisibility(seamsOnly);
   vtkNew<vtkActor> curveActor;
   curveActor->SetMapper(curveMapper);
   curveActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
-  curveActor->GetProperty()->SetLineWidth(2.5);
+  curveActor->GetProperty()->SetLineWidth(seamsOnly ? 4.0 : 2.5);
   curveActor->GetProperty()->SetPointSize(11.0);
   curveActor->GetProperty()->SetRenderPointsAsSpheres(true);
 
@@ -208,7 +211,7 @@ bool writeSolidMATPicture(vtkUnstructuredGrid* solid, vtkPolyData* mat, const st
   renderer->AddActor(sheetActor);
   renderer->AddActor(curveActor);
   renderer->AddActor(solidActor);
-  addLegend(renderer, sheetMapper, title);
+  addLegend(renderer, seamsOnly ? curveMapper : sheetMapper, title);
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(1200, 900);

@@ -4,6 +4,7 @@
 //               [--png OUT.png] [--shape NAME]
 //   exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [...]
 //   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp] [...]
+//   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T] [--max-step H] [--png OUT.png]
 //   exactmat shapes
 //
 // INPUT is a .vtu of (rational) Bézier cells or ExactMAT's .json NURBS format; without
@@ -13,6 +14,7 @@
 #include "vtkExactMATArrayNames.h"
 #include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
+#include "vtkMAT3DFilter.h"
 #include "vtkMATBoundaryConversion.h"
 #include "vtkNURBSReader.h"
 #include "vtkNURBSSource.h"
@@ -64,6 +66,8 @@ const char* Usage = R"(usage:
                    [--sheet-resolution R] [--tolerance T | --step S]
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
+  exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T] [--max-step H] [--png OUT.png]
+              [--shape NAME] [--verify-tolerance V]
   exactmat shapes          list the bundled shapes
 
   INPUT          boundary curves: a .vtu of Bezier cells, or ExactMAT .json NURBS;
@@ -87,13 +91,21 @@ const char* Usage = R"(usage:
                  parallel to y, half the profile's width left of it
   --sheet-resolution R  sheet vertex spacing, fraction of the solid's size (default 0.02)
   OUT.vtp defaults to exactmat-extrude.vtp / exactmat-revolve.vtp
+
+  3d: the seams and junctions of the MAT of a solid bounded by exact faces (SOLID: a .vtu
+  of Bezier quadrilaterals/triangles or planar quads/triangles, or ExactMAT .json
+  surfaces; default: the bundled free-form shape pillow, or --shape NAME)
+  --tolerance T  seam polylines within T x solid size of the seams (default 1e-4)
+  --max-step H   longest step along a seam, fraction of the size (default 0.05)
+  OUT.vtp defaults to exactmat-3d.vtp
 )";
 
 struct Arguments
 {
   std::string command, input, output, png, shape = "plate-with-holes";
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
-  double length = 0.0, angle = 360.0, sheetResolution = 0.02;
+  double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
+  bool shapeGiven = false;
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
 
@@ -162,7 +174,12 @@ Arguments parse(int argc, char* argv[])
     else if (arg == "--branch-step")
       a.branchStep = number(arg, value());
     else if (arg == "--shape")
+    {
       a.shape = value();
+      a.shapeGiven = true;
+    }
+    else if (arg == "--max-step")
+      a.maxStep = number(arg, value());
     else if (arg == "--length")
       a.length = number(arg, value());
     else if (arg == "--angle")
@@ -187,6 +204,8 @@ Arguments parse(int argc, char* argv[])
   }
   if (a.output.empty())
     a.output = "exactmat-" + a.command + ".vtp";
+  if (a.command == "3d" && !a.shapeGiven)
+    a.shape = "pillow"; // the bundled free-form solid
   return a;
 }
 
@@ -587,6 +606,60 @@ int run25D(const Arguments& a)
   }
   return mat->GetVerificationPassed() ? 0 : ExitVerification;
 }
+int run3D(const Arguments& a)
+{
+  vtkNew<ErrorLine> errors;
+  std::string label;
+  vtkSmartPointer<vtkUnstructuredGrid> solid = loadBoundary(a, errors, label);
+  if (!solid)
+    return ExitInputError;
+  vtkNew<vtkMAT3DFilter> mat;
+  mat->SetInputData(solid);
+  mat->SetTolerance(a.tolerance);
+  mat->SetMaximumStep(a.maxStep);
+  mat->SetVerificationTolerance(a.verifyTolerance);
+  mat->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<WarningLine> warnings;
+  mat->AddObserver(vtkCommand::WarningEvent, warnings);
+  vtkNew<ProgressLine> progress;
+  progress->What = "tracing seams";
+  mat->AddObserver(vtkCommand::ProgressEvent, progress);
+  mat->Update();
+  if (errors->Failed)
+    return ExitInputError;
+  vtkPolyData* out = mat->GetOutput();
+  if (!writePolyData(out, a.output, errors))
+    return ExitOutputError;
+  const exactmat::Boundary3D b = exactmat::buildNormalised(exactmat::patchPiecesFromGrid(solid));
+  std::printf("ExactMAT 3D medial axis transform (seams and junctions) of %s\n", label.c_str());
+  std::printf("  boundary            %zu faces, %d convex / %d smooth edges, %d convex vertices, size %.6g\n",
+    b.faces().size(), b.countEdges(exactmat::VertexKind::Convex), b.countEdges(exactmat::VertexKind::Smooth),
+    b.countVertices(exactmat::VertexKind::Convex), b.userFrame().lengthToUser(b.diagonal()));
+  std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
+  std::printf("  seams               %d\n", mat->GetNumberOfSeams());
+  std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
+  std::printf("  time                %.2f ms tracing, %.2f ms verification\n", 1e3 * mat->GetTracingSeconds(),
+    1e3 * mat->GetVerificationSeconds());
+  std::printf("  verified            %d points: largest |distance to boundary - radius| / size %.3g, "
+              "touchpoint mismatches %d\n",
+    mat->GetNumberOfVerifiedPoints(), mat->GetMaximumVerifiedError(), mat->GetNumberOfTouchpointMismatches());
+  std::printf("  verification        %s\n", mat->GetVerificationPassed() ? "passed" : "FAILED");
+  std::printf("  wrote               %s\n", a.output.c_str());
+  if (!a.png.empty())
+  {
+    std::string error;
+    auto count = [](int n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); };
+    const std::string title = "MAT of " + label + ": " + count(mat->GetNumberOfJunctions(), "junction") + ", " +
+      count(mat->GetNumberOfSeams(), "seam") + " (sheets: not yet)";
+    if (!writeSolidMATPicture(solid, out, a.png, title, error))
+    {
+      std::cerr << "exactmat: error: " << error << "\n";
+      return ExitOutputError;
+    }
+    std::printf("  wrote               %s\n", a.png.c_str());
+  }
+  return mat->GetVerificationPassed() ? 0 : ExitVerification;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -602,8 +675,8 @@ int main(int argc, char* argv[])
       std::cout << vtkNURBSSource::GetCatalogueShapeName(i) << "\n";
     return 0;
   }
-  if (a.command != "2d" && a.command != "extrude" && a.command != "revolve")
-    usageError("unknown command '" + a.command + "' (this version has: 2d, extrude, revolve, shapes)");
+  if (a.command != "2d" && a.command != "3d" && a.command != "extrude" && a.command != "revolve")
+    usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, shapes)");
   // Off-screen rendering with this VTK needs an X display: run under Xvfb when none is set.
   const char* display = std::getenv("DISPLAY");
   if (!a.png.empty() && (!display || !*display) && !std::getenv("EXACTMAT_NO_XVFB"))
@@ -620,7 +693,7 @@ int main(int argc, char* argv[])
   }
   try
   {
-    return a.command == "2d" ? run2D(a) : run25D(a);
+    return a.command == "2d" ? run2D(a) : a.command == "3d" ? run3D(a) : run25D(a);
   }
   catch (const exactmat::InputError& e)
   {
