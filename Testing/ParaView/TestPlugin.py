@@ -67,6 +67,12 @@ source.Shape = "pillow"
 source.UpdatePipeline()
 pillow = servermanager.Fetch(source)
 assert pillow.GetNumberOfCells() == 6 and pillow.GetCellType(0) == 77, pillow.GetCellType(0)
+
+# The 3D filter on the pillow: eight seams into one junction at the centre.
+mat3 = MAT3DFilter(Input=source)  # noqa: F821
+mat3.UpdatePipeline()
+seams = servermanager.Fetch(mat3)
+assert seams.GetNumberOfVerts() == 1 and seams.GetNumberOfLines() == 8, (seams.GetNumberOfVerts(), seams.GetNumberOfLines())
 source.Shape = "plate-with-holes"
 source.UpdatePipeline()
 

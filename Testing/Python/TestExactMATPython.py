@@ -13,7 +13,7 @@ from vtkmodules.vtkCommonDataModel import vtkGenericCell
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
 import exactmat
-from exactmat import vtkMAT25DFilter, vtkMAT2DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
+from exactmat import vtkMAT25DFilter, vtkMAT2DFilter, vtkMAT3DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GEOMETRY_TOLERANCE = 1e-12
@@ -297,6 +297,33 @@ class PythonPackage(unittest.TestCase):
 
     def test_mat25d_defaults_equal_the_paraview_xml(self):
         self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 13)
+
+    def test_mat3d_filter_pillow_and_cube_through_numpy(self):
+        # The pillow (a cube with bulging bicubic faces): eight seams from the corners into one
+        # junction at the centre that all six faces touch.
+        source = vtkNURBSSource()
+        source.SetShapeName("pillow")
+        mat = vtkMAT3DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        mat.Update()
+        out = mat.GetOutput()
+        self.assertEqual((mat.GetNumberOfJunctions(), mat.GetNumberOfSeams()), (1, 8))
+        points = vtk_to_numpy(out.GetPoints().GetData())
+        kind = vtk_to_numpy(out.GetPointData().GetArray("PointType"))
+        touch = vtk_to_numpy(out.GetPointData().GetArray("Touchpoints"))
+        np.testing.assert_allclose(points[kind == 2], [[0, 0, 0]], atol=1e-12)
+        self.assertEqual(touch[kind == 2].tolist(), [6])
+        self.assertTrue(mat.GetVerificationPassed())
+        self.assertLessEqual(mat.GetMaximumVerifiedError(), 1e-9)
+        # A cylinder has no seam: refused, and the reason reaches Python.
+        source.SetShapeName("cylinder")
+        errors = exactmat.ErrorObserver().watch(mat)
+        mat.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, r"no seam touches"):
+            errors.check()
+
+    def test_mat3d_defaults_equal_the_paraview_xml(self):
+        self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 4)
 
     def test_defaults_equal_the_paraview_xml(self):
         proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 13)
