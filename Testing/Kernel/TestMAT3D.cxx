@@ -6,6 +6,7 @@
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
 #include "shapes/Catalogue.h"
+#include "shapes/Polyhedra.h"
 
 #include <gtest/gtest.h>
 
@@ -17,91 +18,6 @@ using namespace exactmat;
 namespace
 {
 constexpr double VerifiedDistanceTolerance = 1e-9;
-
-// A polyhedron from vertices and faces (vertex index loops, any orientation): triangles as
-// linear triangles, planar quadrilaterals as bilinear patches, larger polygons as a fan of
-// coplanar triangles about their centroid (edges between them are smooth and flat).
-std::vector<PatchPiece> polyhedron(const Vec3List& v, const std::vector<std::vector<int>>& faces)
-{
-  std::vector<PatchPiece> pieces;
-  auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int entity) {
-    TriangleNet net;
-    net.degree = 1;
-    net.points.resize(3);
-    net.points[TriangleNet::index(1, 0, 0)] = homogeneous(a, 1);
-    net.points[TriangleNet::index(1, 1, 0)] = homogeneous(b, 1);
-    net.points[TriangleNet::index(1, 0, 1)] = homogeneous(c, 1);
-    PatchPiece piece;
-    piece.triangle = net;
-    piece.patch = BezierPatch::fromTriangle(net);
-    piece.entity = entity;
-    pieces.push_back(piece);
-  };
-  for (size_t f = 0; f < faces.size(); ++f)
-  {
-    const std::vector<int>& l = faces[f];
-    const int entity = static_cast<int>(f);
-    if (l.size() == 3)
-      triangle(v[l[0]], v[l[1]], v[l[2]], entity);
-    else if (l.size() == 4)
-    {
-      PatchPiece piece;
-      piece.patch = BezierPatch(1, 1,
-        Vec4List{ homogeneous(v[l[0]], 1), homogeneous(v[l[3]], 1), homogeneous(v[l[1]], 1),
-          homogeneous(v[l[2]], 1) });
-      piece.entity = entity;
-      pieces.push_back(piece);
-    }
-    else
-    {
-      Vec3 c = Vec3::Zero();
-      for (int i : l)
-        c += v[i];
-      c /= static_cast<double>(l.size());
-      for (size_t i = 0; i < l.size(); ++i)
-        triangle(c, v[l[i]], v[l[(i + 1) % l.size()]], entity);
-    }
-  }
-  return pieces;
-}
-
-std::vector<PatchPiece> box(double a, double b, double c)
-{
-  Vec3List v;
-  for (int i = 0; i < 8; ++i)
-    v.push_back(Vec3((i & 1) ? a : -a, (i & 2) ? b : -b, (i & 4) ? c : -c));
-  return polyhedron(v, { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
-                          { 1, 3, 7, 5 } });
-}
-
-// A truncated pyramid: a convex n-gon (vertices on an ellipse at random angles) at z = 0
-// and its image under a homothety (ratio lambda, centre moved up by (sx, sy, h)): the
-// sides are planar trapezoids, the solid convex.
-std::vector<PatchPiece> frustum(std::mt19937& rng, int n)
-{
-  std::uniform_real_distribution<double> U(0.0, 1.0);
-  std::vector<double> angle(n);
-  for (int i = 0; i < n; ++i)
-    angle[i] = 2.0 * M_PI * (i + 0.15 + 0.7 * U(rng)) / n;
-  const double ax = 1.0 + U(rng), ay = 0.6 + U(rng), lambda = 0.3 + 0.6 * U(rng), h = 0.5 + 1.5 * U(rng);
-  const Vec3 shift(0.3 * (U(rng) - 0.5), 0.3 * (U(rng) - 0.5), h);
-  Vec3List v;
-  for (int i = 0; i < n; ++i)
-    v.push_back(Vec3(ax * std::cos(angle[i]), ay * std::sin(angle[i]), 0.0));
-  for (int i = 0; i < n; ++i)
-    v.push_back(shift + lambda * v[i]);
-  std::vector<std::vector<int>> faces;
-  std::vector<int> bottom, top;
-  for (int i = 0; i < n; ++i)
-  {
-    bottom.push_back(n - 1 - i);
-    top.push_back(n + i);
-    faces.push_back({ i, (i + 1) % n, n + (i + 1) % n, n + i });
-  }
-  faces.push_back(bottom);
-  faces.push_back(top);
-  return polyhedron(v, faces);
-}
 
 // The MAT in the normalised frame (as the filter computes it) and the map to the user's.
 struct Traced
@@ -273,7 +189,7 @@ TEST(MAT3D, BoxJunctionsAndSeamsAreTheClosedForm)
   // Half-extents a > b > c: junctions (±(a−c), ±(b−c), 0) with r = c, four faces each;
   // 8 seams from the corners and 4 between the junctions.
   const double a = 2.0, b = 1.5, c = 1.0;
-  const Traced t = trace(box(a, b, c));
+  const Traced t = trace(boxPolyhedron(a, b, c));
   EXPECT_EQ(t.mat.junctionCount(), 4);
   EXPECT_EQ(t.mat.seams.size(), 12u);
   const std::vector<int> d = degrees(t.mat);
@@ -302,7 +218,7 @@ TEST(MAT3D, CatalogueBoxAgrees)
 TEST(MAT3D, CubeHasOneDegenerateJunction)
 {
   // All six faces touch the ball at the centre: one junction, eight seams into it.
-  const Traced t = trace(box(1.0, 1.0, 1.0));
+  const Traced t = trace(boxPolyhedron(1.0, 1.0, 1.0));
   ASSERT_EQ(t.mat.junctionCount(), 1);
   EXPECT_EQ(t.mat.seams.size(), 8u);
   const Traced::Ball j = t.junctions()[0];
@@ -336,7 +252,7 @@ TEST(MAT3D, RandomFrustumsAgreeWithBruteForce)
   for (int k = 0; k < 12; ++k)
   {
     const int n = 3 + k % 6;
-    const std::vector<PatchPiece> pieces = frustum(rng, n);
+    const std::vector<PatchPiece> pieces = randomFrustum(rng, n);
     const std::string what = "frustum " + std::to_string(k) + " (" + std::to_string(n) + " sides)";
     Traced t;
     try
@@ -396,7 +312,7 @@ TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
   // The same junctions (moved with the solid) and every point verified, for a box and random
   // frustums rotated, scaled by 1e-6 … 1e6 and moved up to 1e6 × their size.
   std::mt19937 rng(11);
-  const std::vector<std::vector<PatchPiece>> solids{ box(2.0, 1.5, 1.0), frustum(rng, 5), frustum(rng, 9) };
+  const std::vector<std::vector<PatchPiece>> solids{ boxPolyhedron(2.0, 1.5, 1.0), randomFrustum(rng, 5), randomFrustum(rng, 9) };
   const struct
   {
     double scale, offset;

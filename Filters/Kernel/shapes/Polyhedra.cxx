@@ -1,0 +1,87 @@
+#include "Polyhedra.h"
+
+#include <cmath>
+
+namespace exactmat
+{
+
+std::vector<PatchPiece> polyhedron(const Vec3List& v, const std::vector<std::vector<int>>& faces)
+{
+  std::vector<PatchPiece> pieces;
+  auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, int entity) {
+    TriangleNet net;
+    net.degree = 1;
+    net.points.resize(3);
+    net.points[TriangleNet::index(1, 0, 0)] = homogeneous(a, 1);
+    net.points[TriangleNet::index(1, 1, 0)] = homogeneous(b, 1);
+    net.points[TriangleNet::index(1, 0, 1)] = homogeneous(c, 1);
+    PatchPiece piece;
+    piece.triangle = net;
+    piece.patch = BezierPatch::fromTriangle(net);
+    piece.entity = entity;
+    pieces.push_back(piece);
+  };
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    const std::vector<int>& l = faces[f];
+    const int entity = static_cast<int>(f);
+    if (l.size() == 3)
+      triangle(v[l[0]], v[l[1]], v[l[2]], entity);
+    else if (l.size() == 4)
+    {
+      PatchPiece piece;
+      piece.patch = BezierPatch(1, 1,
+        Vec4List{ homogeneous(v[l[0]], 1), homogeneous(v[l[3]], 1), homogeneous(v[l[1]], 1),
+          homogeneous(v[l[2]], 1) });
+      piece.entity = entity;
+      pieces.push_back(piece);
+    }
+    else
+    {
+      Vec3 c = Vec3::Zero();
+      for (int i : l)
+        c += v[i];
+      c /= static_cast<double>(l.size());
+      for (size_t i = 0; i < l.size(); ++i)
+        triangle(c, v[l[i]], v[l[(i + 1) % l.size()]], entity);
+    }
+  }
+  return pieces;
+}
+
+std::vector<PatchPiece> boxPolyhedron(double a, double b, double c)
+{
+  Vec3List v;
+  for (int i = 0; i < 8; ++i)
+    v.push_back(Vec3((i & 1) ? a : -a, (i & 2) ? b : -b, (i & 4) ? c : -c));
+  return polyhedron(v, { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
+                          { 1, 3, 7, 5 } });
+}
+
+std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n)
+{
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  std::vector<double> angle(n);
+  for (int i = 0; i < n; ++i)
+    angle[i] = 2.0 * M_PI * (i + 0.15 + 0.7 * U(rng)) / n;
+  const double ax = 1.0 + U(rng), ay = 0.6 + U(rng), lambda = 0.3 + 0.6 * U(rng), h = 0.5 + 1.5 * U(rng);
+  const Vec3 shift(0.3 * (U(rng) - 0.5), 0.3 * (U(rng) - 0.5), h);
+  Vec3List v;
+  for (int i = 0; i < n; ++i)
+    v.push_back(Vec3(ax * std::cos(angle[i]), ay * std::sin(angle[i]), 0.0));
+  for (int i = 0; i < n; ++i)
+    v.push_back(shift + lambda * v[i]);
+  std::vector<std::vector<int>> faces;
+  std::vector<int> bottom, top;
+  for (int i = 0; i < n; ++i)
+  {
+    bottom.push_back(n - 1 - i);
+    top.push_back(n + i);
+    faces.push_back({ i, (i + 1) % n, n + (i + 1) % n, n + i });
+  }
+  faces.push_back(bottom);
+  faces.push_back(top);
+  return polyhedron(v, faces);
+}
+
+} // namespace exactmat

@@ -1,0 +1,28 @@
+#pragma once
+/// @file Polyhedra.h
+/// @brief Solids with planar faces as exact boundary pieces: from vertex loops, boxes, and
+/// random truncated pyramids (the 3D MAT's tests and benchmarks).
+
+#include "brep/Boundary3D.h"
+
+#include <random>
+#include <vector>
+
+namespace exactmat
+{
+
+/// A polyhedron from vertices and faces (vertex index loops, either orientation): triangles
+/// as linear triangles, planar quadrilaterals as bilinear patches, larger polygons as a fan
+/// of coplanar triangles about their centroid (the edges between them are flat: smooth).
+/// Entity = face index.
+std::vector<PatchPiece> polyhedron(const Vec3List& vertices, const std::vector<std::vector<int>>& faces);
+
+/// The box [−a, a] × [−b, b] × [−c, c].
+std::vector<PatchPiece> boxPolyhedron(double a, double b, double c);
+
+/// A truncated pyramid: a convex n-gon (vertices on a random ellipse at random angles) in
+/// z = 0 and its image under a random homothety (ratio 0.3 … 0.9) moved up by 0.5 … 2: planar
+/// trapezoid sides, convex; the caps are fans of n triangles.
+std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n);
+
+} // namespace exactmat

@@ -1,0 +1,83 @@
+// Benchmark of the 3D MAT (not a test): seams and junctions per solid, tracing and
+// verification time apart, the verified error; then scaling with the number of faces on
+// truncated pyramids over n-gons (n side faces, caps as fans of n triangles: 3n faces).
+//
+//   exactmat_bench_mat3d [--quick]
+#include "brep/NormalisePieces.h"
+#include "mat3d/MAT3D.h"
+#include "mat3d/PatchBoundary.h"
+#include "medial/Verification.h"
+#include "shapes/Catalogue.h"
+#include "shapes/Polyhedra.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace exactmat;
+
+namespace
+{
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void row(const std::string& name, const std::vector<PatchPiece>& pieces, int repeats)
+{
+  const Boundary3D b = buildNormalised(pieces);
+  MAT3D mat;
+  double best = 1e300;
+  for (int k = 0; k < repeats; ++k)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    mat = computeMAT3D(b);
+    best = std::min(best, msSince(t0));
+  }
+  const MedialComplex c = mat.complex();
+  const auto t0 = std::chrono::steady_clock::now();
+  const PatchBoundary exact(b);
+  const MedialVerification v = verifyMedialComplex(exact, c, 1, std::max(1e-15, 64.0 * b.userFrame().inputRounding()));
+  const double verifyMs = msSince(t0);
+  std::printf("| %s | %zu | %zu | %d | %zu | %.2f | %.0f | %.1e | %d |\n", name.c_str(), b.faces().size(),
+    mat.seams.size(), mat.junctionCount(), c.points.size(), best, verifyMs, v.maxDistanceError,
+    v.contactMismatches);
+  std::fflush(stdout);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int repeats = quick ? 1 : 5;
+  std::printf("## 3D MAT: seams and junctions (adaptive, tolerance 1e-4; best of %d)\n\n", repeats);
+  std::printf("| solid | faces | seams | junctions | points | tracing (ms) | verification (ms) | "
+              "verified error | touchpoint mismatches |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  row("box 4 x 3 x 2", boxPolyhedron(2.0, 1.5, 1.0), repeats);
+  row("cube (6-face junction)", boxPolyhedron(1.0, 1.0, 1.0), repeats);
+  row("regular tetrahedron",
+    polyhedron({ Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1) },
+      { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } }),
+    repeats);
+  row("pillow (bicubic faces)", patchPieces(makeShape("pillow").surfaces), repeats);
+  std::mt19937 rng(3);
+  for (int n : { 6, 12 })
+    row("random frustum, " + std::to_string(n) + "-gon", randomFrustum(rng, n), repeats);
+
+  std::printf("\n## Scaling: random frustums over n-gons (3n faces)\n\n");
+  std::printf("| solid | faces | seams | junctions | points | tracing (ms) | verification (ms) | "
+              "verified error | touchpoint mismatches |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::mt19937 scaling(5);
+  for (int n : { 10, 30, 100, 300 })
+  {
+    if (quick && n > 100)
+      break;
+    row("frustum, " + std::to_string(n) + "-gon", randomFrustum(scaling, n), n >= 300 ? 1 : repeats);
+  }
+  return 0;
+}
