@@ -64,6 +64,7 @@ int main(int argc, char** argv)
       { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } }),
     repeats);
   row("pillow (bicubic faces)", patchPieces(makeShape("pillow").surfaces), repeats);
+  row("box with a free-form top", boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5), repeats);
   std::mt19937 rng(3);
   for (int n : { 6, 12 })
     row("random frustum, " + std::to_string(n) + "-gon", randomFrustum(rng, n), repeats);

@@ -282,6 +282,32 @@ TEST(MAT3D, PillowHasCurvedSeamsIntoTheCentre)
   expectVerified(t, "pillow");
 }
 
+TEST(MAT3D, BoxWithAFreeFormTop)
+{
+  // A 4 × 3 × 2 box whose top is a tilted bicubic bulge (outwards, then inwards): curved
+  // seams, four junctions that are no longer symmetric, every point verified.
+  for (const double bulge : { 0.3, -1.2 })
+  {
+    const Traced t = trace(boxWithFreeFormTop(2.0, 1.5, 1.0, bulge, 0.5));
+    const std::string what = "bulge " + std::to_string(bulge);
+    EXPECT_EQ(t.mat.junctionCount(), 4) << what;
+    EXPECT_EQ(t.mat.seams.size(), 12u) << what;
+    for (const Traced::Ball& j : t.junctions())
+      EXPECT_EQ(j.touchpoints, 4) << what;
+    expectVerified(t, what);
+  }
+  // A bulge so tilted that the top touches one ball twice: not traced yet, and said so.
+  try
+  {
+    trace(boxWithFreeFormTop(2.0, 1.5, 1.0, 1.5, 0.9));
+    ADD_FAILURE() << "no error";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("touches twice"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
 {
   auto message = [](const std::vector<PatchPiece>& pieces) {

@@ -63,6 +63,7 @@ private:
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
   std::vector<int> facesOutside(const MedialBall3D& ball, double radius) const;
   bool empty(const MedialBall3D& ball) const;
+  int reentering(const MedialBall3D& ball) const;
   int addNode(const MedialBall3D& ball, int vertex);
   int findNode(const Vec3& x) const;
   void startFrom(int node);
@@ -121,6 +122,20 @@ bool Tracer::empty(const MedialBall3D& ball) const
                                 : patchComesWithin(B.faces()[f].patch, ball.x, radius))
       return false;
   return true;
+}
+
+// A curved face of the triplet that enters the ball (it touches the ball a second time, or
+// curves into it: the thesis' curvature criterion). Planar faces cannot. The test ball is
+// smaller by 1e-6·r so the tangency at the face's own touchpoint is decided quickly.
+int Tracer::reentering(const MedialBall3D& ball) const
+{
+  const double radius = ball.r * (1.0 - 1e-6) - Margin;
+  if (radius <= 0.0)
+    return -1;
+  for (int g : ball.generators)
+    if (!Generators[g].planar() && patchComesWithin(B.faces()[g].patch, ball.x, radius))
+      return g;
+  return -1;
 }
 
 int Tracer::findNode(const Vec3& x) const
@@ -417,6 +432,10 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
       previous = t;
       continue;
     }
+    if (const int face = empty(next) ? reentering(next) : -1; face >= 0)
+      fail("3D MAT: the seam through ", describe(ball), " reaches a ball that ", B.faces()[face].name(),
+        " touches twice or curves into (a junction of one face with itself, or a skeletal edge): "
+        "not supported yet");
     if (!empty(next))
     {
       const MedialBall3D j = junction(ball, t, h);

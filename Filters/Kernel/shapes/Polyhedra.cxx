@@ -84,4 +84,19 @@ std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n)
   return polyhedron(v, faces);
 }
 
+std::vector<PatchPiece> boxWithFreeFormTop(double a, double b, double c, double bulge, double tilt)
+{
+  std::vector<PatchPiece> pieces = boxPolyhedron(a, b, c);
+  Vec4List net;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+    {
+      const bool inner = (i == 1 || i == 2) && (j == 1 || j == 2);
+      const double z = c + (inner ? bulge * (1.0 + tilt * (i - 1.5)) : 0.0);
+      net.push_back(homogeneous(Vec3(-a + 2.0 * a * i / 3.0, -b + 2.0 * b * j / 3.0, z), 1.0));
+    }
+  pieces[1].patch = BezierPatch(3, 3, std::move(net)); // face 1 of boxPolyhedron is z = c
+  return pieces;
+}
+
 } // namespace exactmat

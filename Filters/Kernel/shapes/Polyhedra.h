@@ -20,6 +20,11 @@ std::vector<PatchPiece> polyhedron(const Vec3List& vertices, const std::vector<s
 /// The box [−a, a] × [−b, b] × [−c, c].
 std::vector<PatchPiece> boxPolyhedron(double a, double b, double c);
 
+/// The box [−a, a] × [−b, b] × [−c, c] whose top (z = c) is a bicubic patch with its four
+/// inner control points raised by bulge·(1 + tilt·(i − 1.5)) (i along x): a free-form face
+/// meeting four planar ones along straight convex edges.
+std::vector<PatchPiece> boxWithFreeFormTop(double a, double b, double c, double bulge, double tilt);
+
 /// A truncated pyramid: a convex n-gon (vertices on a random ellipse at random angles) in
 /// z = 0 and its image under a random homothety (ratio 0.3 … 0.9) moved up by 0.5 … 2: planar
 /// trapezoid sides, convex; the caps are fans of n triangles.
