@@ -126,10 +126,10 @@ bool Tracer::empty(const MedialBall3D& ball) const
 
 // A curved face of the triplet that enters the ball (it touches the ball a second time, or
 // curves into it: the thesis' curvature criterion). Planar faces cannot. The test ball is
-// smaller by 1e-6·r so the tangency at the face's own touchpoint is decided quickly.
+// smaller by 1e-4·r so the tangency at the face's own touchpoint is decided quickly.
 int Tracer::reentering(const MedialBall3D& ball) const
 {
-  const double radius = ball.r * (1.0 - 1e-6) - Margin;
+  const double radius = ball.r * (1.0 - 1e-4) - Margin;
   if (radius <= 0.0)
     return -1;
   for (int g : ball.generators)
