@@ -94,15 +94,10 @@ int vtkMAT3DFilter::RequestData(
       this->NumberOfVerifiedPoints = v.points;
       this->MaximumVerifiedError = v.maxDistanceError;
       this->NumberOfTouchpointMismatches = v.contactMismatches;
-      outcome.run = true;
-      outcome.maximumError = v.maxDistanceError;
-      outcome.passed = this->VerificationPassed = v.ok(this->VerificationTolerance);
+      outcome = exactmat::outcomeOf(v, this->VerificationTolerance, complex, frame);
+      this->VerificationPassed = outcome.passed;
       if (!outcome.passed)
-      {
-        outcome.report = v.problems(this->VerificationTolerance, complex,
-          [&frame](const exactmat::Vec3& x) { return frame.toUser(x); });
         vtkWarningMacro(<< "verification failed: " << outcome.report);
-      }
     }
     exactmat::attachVerification(output, outcome);
     this->UpdateProgress(1.0);

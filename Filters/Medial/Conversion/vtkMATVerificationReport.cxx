@@ -11,6 +11,18 @@
 namespace exactmat
 {
 
+VerificationOutcome outcomeOf(const MedialVerification& v, double tolerance, const MedialComplex& mat,
+  const Normalisation& frame)
+{
+  VerificationOutcome outcome;
+  outcome.run = true;
+  outcome.maximumError = v.maxDistanceError;
+  outcome.passed = v.ok(tolerance);
+  if (!outcome.passed)
+    outcome.report = v.problems(tolerance, mat, [&frame](const Vec3& x) { return frame.toUser(x); });
+  return outcome;
+}
+
 void attachVerification(vtkDataObject* output, const VerificationOutcome& outcome)
 {
   vtkFieldData* fd = output->GetFieldData();

@@ -8,6 +8,9 @@
  * without calling the filter's getters. The filter itself warns (vtkWarningMacro).
  */
 
+#include "common/Normalisation.h"
+#include "medial/Verification.h"
+
 #include <vtkDataObject.h>
 
 #include <string>
@@ -22,6 +25,11 @@ struct VerificationOutcome
   double maximumError = 0.0;
   std::string report;  ///< what failed and where ("" when passed)
 };
+
+/// The outcome of checking a solid's MAT (2.5D or 3D) against `tolerance`, the report's
+/// places in the user's frame.
+VerificationOutcome outcomeOf(const MedialVerification& v, double tolerance, const MedialComplex& mat,
+  const Normalisation& frame);
 
 /// Adds the outcome's field data arrays to `output`.
 void attachVerification(vtkDataObject* output, const VerificationOutcome& outcome);
