@@ -32,6 +32,11 @@
  * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.
  * "start,2,5"; "start"/"end" = the profile faces, "v<vertex>" = a reflex edge).
  *
+ * Sheets of a solid's MAT (field data of vtkMAT3DFilter's output, one tuple per sheet):
+ * `SheetGovernors` (string: the FaceIds of the sheet's face pair, "0,4"), `SheetSeams`
+ * (string: the ElementIds of the seams on its border, "5 9 12"), `SheetConvexEdges` (string:
+ * the face pairs of the convex edges on its border, where its radius is 0, "0/4").
+ *
  * Verification (field data of every MAT output, when VerifyOutput is on):
  * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
  * `MaximumVerifiedError` (double: largest |distance to the exact boundary − Radius| / size),
@@ -59,6 +64,9 @@ constexpr const char* Touchpoints = "Touchpoints";
 constexpr const char* ElementType = "ElementType";
 constexpr const char* ElementId = "ElementId";
 constexpr const char* Governors = "Governors";
+constexpr const char* SheetGovernors = "SheetGovernors";
+constexpr const char* SheetSeams = "SheetSeams";
+constexpr const char* SheetConvexEdges = "SheetConvexEdges";
 constexpr const char* VerificationStatus = "VerificationStatus";
 constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
 constexpr const char* VerificationReport = "VerificationReport";

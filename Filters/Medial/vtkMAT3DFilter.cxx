@@ -10,10 +10,14 @@
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
 
+#include "vtkExactMATArrayNames.h"
+
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -46,7 +50,7 @@ int vtkMAT3DFilter::RequestData(
 {
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfVerifiedPoints = 0;
+  this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSheets = this->NumberOfVerifiedPoints = 0;
   this->NumberOfTouchpointMismatches = 0;
   this->MaximumVerifiedError = this->TracingSeconds = this->VerificationSeconds = 0.0;
   this->VerificationPassed = true;
@@ -82,6 +86,31 @@ int vtkMAT3DFilter::RequestData(
     exactmat::writeMedialComplex(complex, frame, faceIds, false, output);
     this->NumberOfJunctions = mat.junctionCount();
     this->NumberOfSeams = static_cast<int>(mat.seams.size());
+    this->NumberOfSheets = static_cast<int>(mat.sheets.size());
+    // The sheets' topology, for vtkSheetInterpolator: face pair and bounding elements.
+    vtkNew<vtkStringArray> sheetGovernors, sheetSeams, sheetEdges;
+    sheetGovernors->SetName(exactmat::arrays::SheetGovernors);
+    sheetSeams->SetName(exactmat::arrays::SheetSeams);
+    sheetEdges->SetName(exactmat::arrays::SheetConvexEdges);
+    auto faceId = [&boundary](int f) {
+      const exactmat::Face3D& face = boundary.faces()[f];
+      return std::to_string(face.entity >= 0 ? face.entity : face.piece);
+    };
+    for (const exactmat::MAT3DSheet& sheet : mat.sheets)
+    {
+      sheetGovernors->InsertNextValue(faceId(sheet.faceA) + "," + faceId(sheet.faceB));
+      std::string seams, edges;
+      for (int s : sheet.seams)
+        seams += (seams.empty() ? "" : " ") + std::to_string(this->NumberOfJunctions + s);
+      for (int e : sheet.convexEdges)
+        edges += (edges.empty() ? "" : " ") + faceId(boundary.edges()[e].faceA) + "/" +
+          faceId(boundary.edges()[e].faceB);
+      sheetSeams->InsertNextValue(seams);
+      sheetEdges->InsertNextValue(edges);
+    }
+    output->GetFieldData()->AddArray(sheetGovernors);
+    output->GetFieldData()->AddArray(sheetSeams);
+    output->GetFieldData()->AddArray(sheetEdges);
 
     exactmat::VerificationOutcome outcome;
     if (this->VerifyOutput)

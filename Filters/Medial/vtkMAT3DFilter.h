@@ -15,6 +15,9 @@
  * 3 seam end at a convex vertex, radius 0), `Touchpoints` (distinct boundary points the
  * ball touches; 0 at radius 0). Cell data `ElementType` (0 junction, 1 seam), `ElementId`,
  * `Governors` (the FaceIds of the faces the element is equidistant to, e.g. "0,2,4").
+ * Field data: the medial sheets' topology, one tuple per sheet — `SheetGovernors` (its
+ * face pair), `SheetSeams` (the ElementIds of the seams on its border), `SheetConvexEdges`
+ * (the convex edges on its border, as face pairs "a/b"); see vtkExactMATArrayNames.h.
  *
  * The seams are traced from the convex vertices by continuation on the exact ball
  * equations (every touchpoint parameter, centre and radius unknown), steps controlled by
@@ -76,6 +79,7 @@ public:
   /// Results of the last run.
   vtkGetMacro(NumberOfJunctions, int);
   vtkGetMacro(NumberOfSeams, int);
+  vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
   vtkGetMacro(MaximumVerifiedError, double);
   vtkGetMacro(NumberOfTouchpointMismatches, int);
@@ -97,6 +101,7 @@ protected:
   bool VerificationPassed = true;
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
+  int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
   double MaximumVerifiedError = 0.0;
   int NumberOfTouchpointMismatches = 0;

@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 using namespace exactmat;
 
 TEST(vtkMAT3DFilter, BoxGivesTheClosedFormGraph)
@@ -74,6 +76,30 @@ TEST(vtkMAT3DFilter, BoxGivesTheClosedFormGraph)
   ASSERT_TRUE(governors);
   EXPECT_EQ(governors->GetNumberOfTuples(), 16);
   EXPECT_NE(out->GetFieldData()->GetArray(arrays::VerificationStatus), nullptr);
+  // The sheets: 13 face pairs; the middle one (bottom and top faces) is bounded by the four
+  // seams between the junctions and no convex edge.
+  EXPECT_EQ(mat->GetNumberOfSheets(), 13);
+  auto* pairs = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(arrays::SheetGovernors));
+  auto* seams = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(arrays::SheetSeams));
+  auto* edges = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray(arrays::SheetConvexEdges));
+  ASSERT_TRUE(pairs && seams && edges);
+  ASSERT_EQ(pairs->GetNumberOfValues(), 13);
+  int middle = 0;
+  for (vtkIdType i = 0; i < pairs->GetNumberOfValues(); ++i)
+    if (edges->GetValue(i).empty())
+    {
+      ++middle;
+      std::istringstream ids(seams->GetValue(i));
+      int id = 0, count = 0;
+      while (ids >> id)
+      {
+        ++count;
+        EXPECT_GE(id, 4); // seam elements follow the 4 junctions
+        EXPECT_LT(id, 16);
+      }
+      EXPECT_EQ(count, 4);
+    }
+  EXPECT_EQ(middle, 1);
 }
 
 TEST(vtkMAT3DFilter, PillowMovedFarAwayIsTheSame)

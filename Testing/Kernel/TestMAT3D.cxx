@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 using namespace exactmat;
@@ -70,6 +71,8 @@ std::vector<PatchPiece> moved(std::vector<PatchPiece> pieces, const Eigen::Matri
   return pieces;
 }
 
+void expectClosedSheets(const Traced& t, const std::string& what);
+
 // Every point checked against the exact boundary (distance = radius, touchpoint count);
 // every seam joins two nodes; one connected graph.
 void expectVerified(const Traced& t, const std::string& what)
@@ -96,6 +99,40 @@ void expectVerified(const Traced& t, const std::string& what)
   for (size_t i = 0; i < parent.size(); ++i)
     components += root(static_cast<int>(i)) == static_cast<int>(i);
   EXPECT_EQ(components, 1) << what;
+  expectClosedSheets(t, what);
+}
+
+// Every sheet's border (its seams and convex edges) is closed: each node on it is met an even
+// number of times. Holds where no smooth edge splits a sheet between faces.
+void expectClosedSheets(const Traced& t, const std::string& what)
+{
+  if (t.boundary->countEdges(VertexKind::Smooth) > 0)
+    return;
+  ASSERT_FALSE(t.mat.sheets.empty()) << what;
+  std::vector<int> nodeOfVertex(t.boundary->vertices().size(), -1);
+  for (size_t n = 0; n < t.mat.nodes.size(); ++n)
+    if (t.mat.nodes[n].vertex >= 0)
+      nodeOfVertex[t.mat.nodes[n].vertex] = static_cast<int>(n);
+  std::vector<int> sheetsOfSeam(t.mat.seams.size(), 0);
+  for (const MAT3DSheet& sheet : t.mat.sheets)
+  {
+    std::map<int, int> degree;
+    for (int s : sheet.seams)
+    {
+      ++degree[t.mat.seams[s].startNode];
+      ++degree[t.mat.seams[s].endNode];
+      ++sheetsOfSeam[s];
+    }
+    for (int e : sheet.convexEdges)
+    {
+      ++degree[nodeOfVertex[t.boundary->edges()[e].startVertex]];
+      ++degree[nodeOfVertex[t.boundary->edges()[e].endVertex]];
+    }
+    for (const auto& [node, d] : degree)
+      EXPECT_EQ(d % 2, 0) << what << ": sheet of faces " << sheet.faceA << ", " << sheet.faceB << " at node " << node;
+  }
+  for (size_t s = 0; s < sheetsOfSeam.size(); ++s)
+    EXPECT_EQ(sheetsOfSeam[s], 3) << what << ": seam " << s; // one sheet per pair of its triplet
 }
 
 std::vector<int> degrees(const MAT3D& m)
@@ -205,6 +242,18 @@ TEST(MAT3D, BoxJunctionsAndSeamsAreTheClosedForm)
   }
   expectVerified(t, "box");
   expectJunctionsMatchBruteForce(t, "box");
+  // 13 sheets: one per pair of adjacent faces, bounded by their convex edge and two seams
+  // through a junction (the 4 vertical edges) or three (the 8 others: two corner seams and
+  // one between junctions), and the middle one between top and bottom (the four seams
+  // between the junctions, no edge).
+  ASSERT_EQ(t.mat.sheets.size(), 13u);
+  std::map<std::pair<size_t, size_t>, int> kinds; // (seams, convex edges) → sheets
+  for (const MAT3DSheet& sheet : t.mat.sheets)
+    ++kinds[{ sheet.seams.size(), sheet.convexEdges.size() }];
+  auto count = [&kinds](size_t seams, size_t edges) { return kinds[{ seams, edges }]; };
+  EXPECT_EQ(count(2, 1), 4);
+  EXPECT_EQ(count(3, 1), 8);
+  EXPECT_EQ(count(4, 0), 1);
 }
 
 TEST(MAT3D, CatalogueBoxAgrees)

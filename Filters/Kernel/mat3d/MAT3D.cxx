@@ -73,6 +73,7 @@ private:
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
   std::string describe(const MedialBall3D& ball) const;
   void reportProgress();
+  void collectSheets();
 
   const Boundary3D& B;
   MAT3DOptions Options;
@@ -474,6 +475,40 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
     fail("3D MAT: more than ", Options.maxSeams, " seams");
 }
 
+// Every pair of faces in a seam's triplet (at any of its balls: a triplet changes across
+// smooth edges) bounds a sheet with that seam; convex edges between the pair close it.
+void Tracer::collectSheets()
+{
+  std::map<std::pair<int, int>, MAT3DSheet> sheets;
+  for (int s = 0; s < static_cast<int>(Result.seams.size()); ++s)
+  {
+    std::set<std::pair<int, int>> pairs;
+    for (const MedialBall3D& ball : Result.seams[s].balls)
+      if (ball.size() == 3)
+        for (int i = 0; i < 3; ++i)
+          for (int j = i + 1; j < 3; ++j)
+            pairs.insert(std::minmax(ball.generators[i], ball.generators[j]));
+    for (const auto& p : pairs)
+    {
+      MAT3DSheet& sheet = sheets[p];
+      sheet.faceA = p.first;
+      sheet.faceB = p.second;
+      sheet.seams.push_back(s);
+    }
+  }
+  for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
+  {
+    const Edge3D& edge = B.edges()[e];
+    if (edge.kind != VertexKind::Convex)
+      continue;
+    const auto it = sheets.find(std::minmax(edge.faceA, edge.faceB));
+    if (it != sheets.end())
+      it->second.convexEdges.push_back(e);
+  }
+  for (auto& [pair, sheet] : sheets)
+    Result.sheets.push_back(std::move(sheet));
+}
+
 void Tracer::reportProgress()
 {
   if (!Options.progress)
@@ -571,6 +606,7 @@ MAT3D Tracer::run()
     if (!touched[root(f)])
       fail("3D MAT: no seam touches ", B.faces()[f].name(),
         ": its sheets are bounded only by edges, circles of contact or skeletal edges, which are not traced yet");
+  collectSheets();
   return std::move(Result);
 }
 } // namespace

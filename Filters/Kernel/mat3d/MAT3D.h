@@ -54,10 +54,21 @@ struct MAT3DSeam
   std::vector<MedialBall3D> balls; ///< from start node to end node, both included
 };
 
+/// A medial sheet's topology (for vtkSheetInterpolator): its generator pair and the
+/// elements bounding it — the seams whose triplet holds both faces, and the convex edges
+/// between them (where the sheet reaches the boundary with radius 0).
+struct MAT3DSheet
+{
+  int faceA = -1, faceB = -1; ///< face indices, faceA < faceB
+  std::vector<int> seams;      ///< indices into MAT3D::seams
+  std::vector<int> convexEdges; ///< indices into Boundary3D::edges()
+};
+
 struct MAT3D
 {
   std::vector<MAT3DNode> nodes;
   std::vector<MAT3DSeam> seams;
+  std::vector<MAT3DSheet> sheets;
 
   int junctionCount() const;
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
