@@ -637,6 +637,8 @@ int run3D(const Arguments& a)
     b.countVertices(exactmat::VertexKind::Convex), b.userFrame().lengthToUser(b.diagonal()));
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
+  std::printf("  sheets              %d (face pairs and their bounding seams; surfaces not yet)\n",
+    mat->GetNumberOfSheets());
   std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
   std::printf("  time                %.2f ms tracing, %.2f ms verification\n", 1e3 * mat->GetTracingSeconds(),
     1e3 * mat->GetVerificationSeconds());
