@@ -162,7 +162,10 @@ int Tracer::addNode(const MedialBall3D& ball, int vertex)
       }
     return found;
   }
-  Result.nodes.push_back({ ball, vertex });
+  MAT3DNode node;
+  node.ball = ball;
+  node.vertex = vertex;
+  Result.nodes.push_back(std::move(node));
   Queue.push_back(static_cast<int>(Result.nodes.size()) - 1);
   return static_cast<int>(Result.nodes.size()) - 1;
 }
