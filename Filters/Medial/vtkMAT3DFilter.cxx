@@ -74,16 +74,25 @@ int vtkMAT3DFilter::RequestData(
     const exactmat::MAT3D mat = exactmat::computeMAT3D(boundary, options);
     this->TracingSeconds = secondsSince(t0);
     const exactmat::MedialComplex complex = mat.complex();
-    auto faceIds = [&boundary](const exactmat::MedialElement& e) {
+    auto faceId = [&boundary](int f) {
+      const exactmat::Face3D& face = boundary.faces()[f];
+      return std::to_string(face.entity >= 0 ? face.entity : face.piece);
+    };
+    // A generator as the user's face ids: a face's id; a reflex edge's or corner's faces
+    // joined by "/".
+    auto generatorId = [&mat, &faceId](int g) {
       std::string out;
-      for (int g : e.governors)
-      {
-        const exactmat::Face3D& f = boundary.faces()[g];
-        out += (out.empty() ? "" : ",") + std::to_string(f.entity >= 0 ? f.entity : f.piece);
-      }
+      for (int f : mat.generators[g].faces)
+        out += (out.empty() ? "" : "/") + faceId(f);
       return out;
     };
-    exactmat::writeMedialComplex(complex, frame, faceIds, false, output);
+    auto generatorIds = [&generatorId](const exactmat::MedialElement& e) {
+      std::string out;
+      for (int g : e.governors)
+        out += (out.empty() ? "" : ",") + generatorId(g);
+      return out;
+    };
+    exactmat::writeMedialComplex(complex, frame, generatorIds, false, output);
     this->NumberOfJunctions = mat.junctionCount();
     this->NumberOfSeams = static_cast<int>(mat.seams.size());
     this->NumberOfSheets = static_cast<int>(mat.sheets.size());
@@ -92,13 +101,9 @@ int vtkMAT3DFilter::RequestData(
     sheetGovernors->SetName(exactmat::arrays::SheetGovernors);
     sheetSeams->SetName(exactmat::arrays::SheetSeams);
     sheetEdges->SetName(exactmat::arrays::SheetConvexEdges);
-    auto faceId = [&boundary](int f) {
-      const exactmat::Face3D& face = boundary.faces()[f];
-      return std::to_string(face.entity >= 0 ? face.entity : face.piece);
-    };
     for (const exactmat::MAT3DSheet& sheet : mat.sheets)
     {
-      sheetGovernors->InsertNextValue(faceId(sheet.faceA) + "," + faceId(sheet.faceB));
+      sheetGovernors->InsertNextValue(generatorId(sheet.generatorA) + "," + generatorId(sheet.generatorB));
       std::string seams, edges;
       for (int s : sheet.seams)
         seams += (seams.empty() ? "" : " ") + std::to_string(this->NumberOfJunctions + s);

@@ -129,7 +129,7 @@ void expectClosedSheets(const Traced& t, const std::string& what)
       ++degree[nodeOfVertex[t.boundary->edges()[e].endVertex]];
     }
     for (const auto& [node, d] : degree)
-      EXPECT_EQ(d % 2, 0) << what << ": sheet of faces " << sheet.faceA << ", " << sheet.faceB << " at node " << node;
+      EXPECT_EQ(d % 2, 0) << what << ": sheet of faces " << sheet.generatorA << ", " << sheet.generatorB << " at node " << node;
   }
   for (size_t s = 0; s < sheetsOfSeam.size(); ++s)
     EXPECT_EQ(sheetsOfSeam[s], 3) << what << ": seam " << s; // one sheet per pair of its triplet
@@ -372,14 +372,64 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
   };
   // A cylinder: its MAT has no seam (cones and the axis): not traced yet, and said so.
   EXPECT_NE(message(patchPieces(makeShape("cylinder").surfaces)).find("no seam touches"), std::string::npos);
-  // An L-shaped prism has a reflex edge.
+}
+
+namespace
+{
+// The prism over the L with legs 1 thick, [0, 2]² minus [1, 2]², from z = 0 to z = h; each
+// cap as two convex quadrilaterals (their common edge is flat: smooth).
+std::vector<PatchPiece> lPrism(double h)
+{
   const Vec3List v{ Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0),
-    Vec3(0, 0, 1), Vec3(2, 0, 1), Vec3(2, 1, 1), Vec3(1, 1, 1), Vec3(1, 2, 1), Vec3(0, 2, 1) };
-  // Each cap as two convex quadrilaterals (their common edge is flat: smooth).
+    Vec3(0, 0, h), Vec3(2, 0, h), Vec3(2, 1, h), Vec3(1, 1, h), Vec3(1, 2, h), Vec3(0, 2, h) };
   std::vector<std::vector<int>> faces{ { 3, 2, 1, 0 }, { 5, 4, 3, 0 }, { 6, 7, 8, 9 }, { 6, 9, 10, 11 } };
   for (int i = 0; i < 6; ++i)
     faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
-  EXPECT_NE(message(polyhedron(v, faces)).find("reflex"), std::string::npos);
+  return polyhedron(v, faces);
+}
+
+// How many seams of the MAT touch a reflex edge somewhere.
+int seamsTouchingReflexEdges(const MAT3D& mat)
+{
+  int n = 0;
+  for (const MAT3DSeam& s : mat.seams)
+  {
+    bool touches = false;
+    for (const MedialBall3D& b : s.balls)
+      for (int g : b.generators)
+        touches = touches || mat.generators[g].kind == GeneratorKind::ReflexEdge;
+    n += touches;
+  }
+  return n;
+}
+} // namespace
+
+// The L prism, 2.5 high: a reflex edge (x = y = 1) between the inner faces. Its profile's
+// MAT has branch points where the legs end, (1.5, 0.5) and (0.5, 1.5) with r = 0.5, and on
+// y = x at (c, c), c = 2 − √2, equidistant from x = 0, y = 0 and the reflex corner (1, 1):
+// the 3D junctions are those balls where a cap touches too (as vtkMAT25DFilter finds them).
+TEST(MAT3D, LPrismHasSeamsAlongItsReflexEdge)
+{
+  const double h = 2.5, c = 2.0 - std::sqrt(2.0);
+  const Traced t = trace(lPrism(h));
+  const std::vector<Traced::Ball> js = t.junctions();
+  auto found = [&](const Vec3& x, double r) {
+    for (const Traced::Ball& j : js)
+      if ((j.x - x).norm() <= 1e-10 && std::abs(j.r - r) <= 1e-10)
+        return true;
+    return false;
+  };
+  EXPECT_EQ(js.size(), 6u);
+  for (double z : { 0.5, h - 0.5 })
+  {
+    EXPECT_TRUE(found(Vec3(1.5, 0.5, z), 0.5)) << z;
+    EXPECT_TRUE(found(Vec3(0.5, 1.5, z), 0.5)) << z;
+  }
+  EXPECT_TRUE(found(Vec3(c, c, c), c));
+  EXPECT_TRUE(found(Vec3(c, c, h - c), c));
+  EXPECT_EQ(t.mat.generators.size(), t.boundary->faces().size() + 1) << "one reflex edge generator";
+  EXPECT_GE(seamsTouchingReflexEdges(t.mat), 2);
+  expectVerified(t, "L prism");
 }
 
 TEST(MAT3D, InvariantUnderMotionScaleAndPosition)

@@ -1,9 +1,11 @@
 #include "Generator3D.h"
 
+#include "common/Format.h"
 #include "geometry/ClosestPoint.h"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace exactmat
 {
@@ -20,11 +22,104 @@ bool isPlanar(const BezierPatch& patch, const Vec3& origin, const Vec3& normal, 
         return false;
   return true;
 }
+
+// The inward normal of a (curved) patch at (u, v) and its derivatives: n = −m/|m| with
+// m = Su × Sv, dn = −(dm − m̂(m̂·dm))/|m| (the Weingarten map from the second derivatives; no
+// curvature frame needed).
+Touch3D patchTouch(const BezierPatch& patch, const Vec2& q)
+{
+  Touch3D t;
+  const SurfaceDerivatives d = patch.derivatives(q.x(), q.y());
+  const Vec3 m = d.su.cross(d.sv);
+  const double len = m.norm();
+  t.point = d.point;
+  t.normal = -m / len;
+  t.dPoint.col(0) = d.su;
+  t.dPoint.col(1) = d.sv;
+  const Vec3 mh = m / len;
+  const Vec3 dmu = d.suu.cross(d.sv) + d.su.cross(d.suv);
+  const Vec3 dmv = d.suv.cross(d.sv) + d.su.cross(d.svv);
+  t.dNormal.col(0) = -(dmu - mh * mh.dot(dmu)) / len;
+  t.dNormal.col(1) = -(dmv - mh * mh.dot(dmv)) / len;
+  return t;
+}
+
+// Two unit vectors orthogonal to the unit vector n and to each other.
+void frameAbout(const Vec3& n, Vec3& a, Vec3& b)
+{
+  const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+  a = n.cross(helper).normalized();
+  b = n.cross(a);
+}
 } // namespace
+
+Generator3D::Generator3D(const Boundary3D& boundary, GeneratorKind kind, int entity)
+  : Boundary(&boundary)
+  , Kind(kind)
+  , Entity(entity)
+{
+}
+
+Generator3D Generator3D::reflexEdge(const Boundary3D& boundary, int edge)
+{
+  Generator3D g(boundary, GeneratorKind::ReflexEdge, edge);
+  const Edge3D& e = boundary.edges()[edge];
+  g.Faces = { e.faceA, e.faceB };
+  g.EdgeCurve = boundary.faces()[e.faceA].patch.side(e.sideA);
+  g.Straight = g.EdgeCurve.degree() == 1 && g.EdgeCurve.weight(0) == g.EdgeCurve.weight(1);
+  g.EdgeSide[0] = e.sideA;
+  g.EdgeSide[1] = e.sideB;
+  for (int which = 0; which < 2; ++which)
+  {
+    const Generator3D face(boundary, g.Faces[which]);
+    g.EdgePlanar[which] = face.planar();
+    g.EdgeFaceNormal[which] = face.Inward;
+  }
+  return g;
+}
+
+Generator3D Generator3D::reflexCorner(const Boundary3D& boundary, int vertex)
+{
+  Generator3D g(boundary, GeneratorKind::ReflexCorner, vertex);
+  const Vertex3D& v = boundary.vertices()[vertex];
+  g.Origin = v.point;
+  Vec3 sum = Vec3::Zero();
+  for (int e : v.edges)
+  {
+    const Edge3D& edge = boundary.edges()[e];
+    for (int f : { edge.faceA, edge.faceB })
+      if (std::find(g.Faces.begin(), g.Faces.end(), f) == g.Faces.end())
+        g.Faces.push_back(f);
+    if (edge.kind != VertexKind::Reflex)
+      continue;
+    // The edge's direction leaving the vertex.
+    const BezierCurve c = boundary.faces()[edge.faceA].patch.side(edge.sideA);
+    const Vec3 tau = edge.startVertex == vertex ? c.endTangent(false) : Vec3(-c.endTangent(true));
+    g.CornerEdges.push_back(e);
+    g.CornerTangents.push_back(tau);
+    sum += tau;
+  }
+  // The cone {d : d·τ ≤ 0 for every τ} (the polar of the convex cone the reflex edges span
+  // outside the material) holds −Σ τ whenever it has an interior.
+  g.Inward = sum.norm() > 0.0 ? Vec3(-sum.normalized()) : Vec3::Zero();
+  frameAbout(g.Inward.norm() > 0.0 ? g.Inward : Vec3::UnitZ(), g.Axis0, g.Axis1);
+  return g;
+}
+
+bool Generator3D::cornerHasCone() const
+{
+  if (Kind != GeneratorKind::ReflexCorner || CornerTangents.size() < 3 || Inward.norm() == 0.0)
+    return false;
+  for (const Vec3& tau : CornerTangents)
+    if (!(Inward.dot(tau) < -1e-6))
+      return false;
+  return true;
+}
 
 Generator3D::Generator3D(const Boundary3D& boundary, int face)
   : Boundary(&boundary)
-  , Face(face)
+  , Entity(face)
+  , Faces{ face }
 {
   const BezierPatch& patch = boundary.faces()[face].patch;
   Origin = patch.evaluate(0.5, 0.5);
@@ -105,42 +200,150 @@ void Generator3D::setPolygon(const BezierPatch& patch, double size)
 
 Touch3D Generator3D::evaluate(const Vec2& q) const
 {
-  Touch3D t;
-  if (Planar)
+  switch (Kind)
   {
-    t.point = Origin + q.x() * Axis0 + q.y() * Axis1;
-    t.normal = Inward;
-    t.dPoint.col(0) = Axis0;
-    t.dPoint.col(1) = Axis1;
-    return t;
+    case GeneratorKind::ReflexEdge:
+      return evaluateEdge(q);
+    case GeneratorKind::ReflexCorner:
+      return evaluateCorner(q);
+    default:
+      return evaluateFace(q);
   }
-  const SurfaceDerivatives d = Boundary->faces()[Face].patch.derivatives(q.x(), q.y());
-  const Vec3 m = d.su.cross(d.sv);
-  const double len = m.norm();
-  t.point = d.point;
-  t.normal = -m / len;
-  t.dPoint.col(0) = d.su;
-  t.dPoint.col(1) = d.sv;
-  // n = −m/|m|: dn = −(dm − n̂(n̂·dm))/|m| with n̂ = m/|m| (the Weingarten map, from the
-  // second derivatives; no curvature frame needed).
-  const Vec3 mh = m / len;
-  const Vec3 dmu = d.suu.cross(d.sv) + d.su.cross(d.suv);
-  const Vec3 dmv = d.suv.cross(d.sv) + d.su.cross(d.svv);
-  t.dNormal.col(0) = -(dmu - mh * mh.dot(dmu)) / len;
-  t.dNormal.col(1) = -(dmv - mh * mh.dot(dmv)) / len;
+}
+
+Touch3D Generator3D::evaluateFace(const Vec2& q) const
+{
+  if (!Planar)
+    return patchTouch(Boundary->faces()[Entity].patch, q);
+  Touch3D t;
+  t.point = Origin + q.x() * Axis0 + q.y() * Axis1;
+  t.normal = Inward;
+  t.dPoint.col(0) = Axis0;
+  t.dPoint.col(1) = Axis1;
   return t;
+}
+
+void Generator3D::edgeNormal(int which, double t, Vec3& normal, Vec3& derivative) const
+{
+  if (EdgePlanar[which])
+  {
+    normal = EdgeFaceNormal[which];
+    derivative = Vec3::Zero();
+    return;
+  }
+  // Face B runs along the edge backwards: its side parameter is 1 − t.
+  const int side = EdgeSide[which];
+  const double s = which == 0 ? t : 1.0 - t;
+  const Vec2 along = BezierPatch::sideParameter(side, 1.0) - BezierPatch::sideParameter(side, 0.0);
+  const Touch3D touch = patchTouch(Boundary->faces()[Faces[which]].patch, BezierPatch::sideParameter(side, s));
+  normal = touch.normal;
+  derivative = touch.dNormal * along * (which == 0 ? 1.0 : -1.0);
+}
+
+double Generator3D::edgeAngle(double t) const
+{
+  Vec3 na, nb, dna, dnb;
+  edgeNormal(0, t, na, dna);
+  edgeNormal(1, t, nb, dnb);
+  return std::atan2((nb - na.dot(nb) * na).norm(), na.dot(nb));
+}
+
+Touch3D Generator3D::evaluateEdge(const Vec2& q) const
+{
+  const double t = q.x(), theta = q.y();
+  Vec3 na, nb, dna, dnb;
+  edgeNormal(0, t, na, dna);
+  edgeNormal(1, t, nb, dnb);
+  // W = P/|P|, P = N_B − (N_A·N_B) N_A: the unit vector ⟂ N_A in the plane of the normals.
+  const double c = na.dot(nb);
+  const Vec3 p = nb - c * na;
+  const double len = p.norm();
+  const Vec3 w = p / len;
+  const double dc = dna.dot(nb) + na.dot(dnb);
+  const Vec3 dp = dnb - dc * na - c * dna;
+  const Vec3 dw = (dp - w * w.dot(dp)) / len;
+  const CurveDerivatives curve = EdgeCurve.derivatives(t);
+  Touch3D touch;
+  touch.point = curve.point;
+  touch.dPoint.col(0) = curve.d1;
+  touch.normal = std::cos(theta) * na + std::sin(theta) * w;
+  touch.dNormal.col(0) = std::cos(theta) * dna + std::sin(theta) * dw;
+  touch.dNormal.col(1) = -std::sin(theta) * na + std::cos(theta) * w;
+  return touch;
+}
+
+Touch3D Generator3D::evaluateCorner(const Vec2& q) const
+{
+  // Gnomonic: N = m/|m|, m = axis + a·e0 + b·e1.
+  const Vec3 m = Inward + q.x() * Axis0 + q.y() * Axis1;
+  const double len = m.norm();
+  Touch3D touch;
+  touch.point = Origin;
+  touch.normal = m / len;
+  touch.dNormal.col(0) = (Axis0 - touch.normal * touch.normal.dot(Axis0)) / len;
+  touch.dNormal.col(1) = (Axis1 - touch.normal * touch.normal.dot(Axis1)) / len;
+  return touch;
 }
 
 Vec2 Generator3D::parameterOf(const Vec3& x) const
 {
+  if (Kind != GeneratorKind::Face)
+    return touchParameter(nearestPoint(x), x);
   if (Planar)
     return Vec2((x - Origin).dot(Axis0), (x - Origin).dot(Axis1));
-  const PatchFootpoint f = closestPoint(Boundary->faces()[Face].patch, x);
+  const PatchFootpoint f = closestPoint(Boundary->faces()[Entity].patch, x);
   return Vec2(f.u, f.v);
+}
+
+Vec2 Generator3D::touchParameter(const Vec3& foot, const Vec3& centre) const
+{
+  if (Kind == GeneratorKind::Face)
+    return parameterOf(foot);
+  const Vec3 d = centre - foot;
+  if (Kind == GeneratorKind::ReflexCorner)
+  {
+    const double along = d.dot(Inward);
+    if (!(along > 0.0))
+      return Vec2::Zero();
+    return Vec2(d.dot(Axis0) / along, d.dot(Axis1) / along);
+  }
+  double t = 0.0;
+  if (Straight)
+  {
+    const Vec3 a = EdgeCurve.startPoint(), e = EdgeCurve.endPoint() - a;
+    t = (foot - a).dot(e) / e.squaredNorm();
+  }
+  else
+    t = closestPoint(EdgeCurve, foot).t;
+  Vec3 na, nb, dna, dnb;
+  edgeNormal(0, t, na, dna);
+  edgeNormal(1, t, nb, dnb);
+  const Vec3 w = (nb - na.dot(nb) * na).normalized();
+  return Vec2(t, d.norm() > 0.0 ? std::atan2(d.dot(w), d.dot(na)) : 0.0);
 }
 
 int Generator3D::exitSide(const Vec2& q, double tolerance) const
 {
+  const double slack = tolerance / Boundary->diagonal();
+  if (Kind == GeneratorKind::ReflexEdge)
+  {
+    const double out[4] = { -q.y(), q.y() - edgeAngle(q.x()), -q.x(), q.x() - 1.0 };
+    const int worst = static_cast<int>(std::max_element(out, out + 4) - out);
+    return out[worst] > slack ? worst : -1;
+  }
+  if (Kind == GeneratorKind::ReflexCorner)
+  {
+    const Vec3 n = evaluateCorner(q).normal;
+    int worst = -1;
+    double most = slack;
+    for (size_t i = 0; i < CornerTangents.size(); ++i)
+      if (n.dot(CornerTangents[i]) > most)
+      {
+        most = n.dot(CornerTangents[i]);
+        worst = static_cast<int>(i);
+      }
+    return worst;
+  }
   double u = q.x(), v = q.y();
   if (!Polygon.empty())
   {
@@ -163,7 +366,7 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
   }
   if (Planar)
   {
-    const PatchFootpoint f = closestPoint(Boundary->faces()[Face].patch, evaluate(q).point);
+    const PatchFootpoint f = closestPoint(Boundary->faces()[Entity].patch, evaluate(q).point);
     if (f.distance <= tolerance)
       return -1;
     u = f.u;
@@ -185,8 +388,17 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
 
 Vec3 Generator3D::nearestPoint(const Vec3& x) const
 {
+  if (Kind == GeneratorKind::ReflexCorner)
+    return Origin;
+  if (Kind == GeneratorKind::ReflexEdge)
+  {
+    if (!Straight)
+      return closestPoint(EdgeCurve, x).point;
+    const Vec3 a = EdgeCurve.startPoint(), e = EdgeCurve.endPoint() - a;
+    return a + std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) * e;
+  }
   if (Polygon.empty())
-    return closestPoint(Boundary->faces()[Face].patch, x).point;
+    return closestPoint(Boundary->faces()[Entity].patch, x).point;
   const Vec2 q = parameterOf(x);
   if (exitSide(q, 0.0) < 0)
     return evaluate(q).point;
@@ -210,14 +422,24 @@ Vec3 Generator3D::nearestPoint(const Vec3& x) const
 
 double Generator3D::distance(const Vec3& x) const
 {
+  if (Kind != GeneratorKind::Face)
+    return (nearestPoint(x) - x).norm();
   if (Polygon.empty())
-    return closestPoint(Boundary->faces()[Face].patch, x).distance;
+    return closestPoint(Boundary->faces()[Entity].patch, x).distance;
   return (nearestPoint(x) - x).norm();
 }
 
 std::string Generator3D::name() const
 {
-  return Boundary->faces()[Face].name();
+  if (Kind == GeneratorKind::Face)
+    return Boundary->faces()[Entity].name();
+  std::ostringstream s;
+  if (Kind == GeneratorKind::ReflexEdge)
+    s << "the reflex edge between " << Boundary->faces()[Faces[0]].name() << " and "
+      << Boundary->faces()[Faces[1]].name();
+  else
+    s << "the reflex corner at " << format(Boundary->userPoint(Origin));
+  return s.str();
 }
 
 } // namespace exactmat

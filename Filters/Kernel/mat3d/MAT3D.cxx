@@ -35,8 +35,28 @@ public:
     , Size(boundary.diagonal())
     , System(Generators)
   {
+    // Generators: the faces (generator index = face index), then the reflex edges, then
+    // the reflex corners whose normal cone has an interior.
     for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
       Generators.emplace_back(B, f);
+    EdgeGenerator.assign(B.edges().size(), -1);
+    for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
+      if (B.edges()[e].kind == VertexKind::Reflex)
+      {
+        EdgeGenerator[e] = static_cast<int>(Generators.size());
+        Generators.push_back(Generator3D::reflexEdge(B, e));
+      }
+    CornerGenerator.assign(B.vertices().size(), -1);
+    for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
+      if (!hasEdgeOfKind(v, VertexKind::Convex) && hasEdgeOfKind(v, VertexKind::Reflex))
+      {
+        Generator3D corner = Generator3D::reflexCorner(B, v);
+        if (corner.cornerHasCone())
+        {
+          CornerGenerator[v] = static_cast<int>(Generators.size());
+          Generators.push_back(std::move(corner));
+        }
+      }
     std::vector<Box3> boxes;
     for (const Face3D& f : B.faces())
       boxes.push_back(f.patch.boundingBox());
@@ -59,7 +79,18 @@ public:
   MAT3D run();
 
 private:
-  // Distance from x to face f (global closest point on its patch).
+  bool hasEdgeOfKind(int vertex, VertexKind kind) const
+  {
+    for (int e : B.vertices()[vertex].edges)
+      if (B.edges()[e].kind == kind)
+        return true;
+    return false;
+  }
+  bool attached(const MedialBall3D& ball, int face) const;
+  int reflexEntityAt(int face, const Vec3& foot) const;
+  int beyondVertex(int edge, int vertex) const;
+  void crossOver(MedialBall3D& ball, int i, int side) const;
+  // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
   std::vector<int> facesOutside(const MedialBall3D& ball, double radius) const;
   bool empty(const MedialBall3D& ball) const;
@@ -82,6 +113,7 @@ private:
   BallSystem System;
   BoundingVolumeHierarchy Tree;
   std::map<std::pair<int, int>, int> SideEdge;
+  std::vector<int> EdgeGenerator, CornerGenerator; // by edge / vertex, −1 where none
   double Solve = 0.0, Degenerate = 0.0, Margin = 0.0, NodeMerge = 0.0;
 
   MAT3D Result;
@@ -97,17 +129,116 @@ std::string Tracer::describe(const MedialBall3D& ball) const
   std::ostringstream s;
   s << "the ball at " << format(ball.x) << " of radius " << ball.r << " touching ";
   for (int i = 0; i < ball.size(); ++i)
-    s << (i == 0 ? "" : i + 1 == ball.size() ? " and " : ", ") << B.faces()[ball.generators[i]].name();
+    s << (i == 0 ? "" : i + 1 == ball.size() ? " and " : ", ") << Generators[ball.generators[i]].name();
   return s.str();
+}
+
+// A face the ball touches through one of its generators (the generator itself, a face at
+// a reflex edge or corner it touches): it passes through a touchpoint, outside the ball.
+bool Tracer::attached(const MedialBall3D& ball, int face) const
+{
+  for (int g : ball.generators)
+  {
+    const std::vector<int>& faces = Generators[g].faces();
+    if (std::find(faces.begin(), faces.end(), face) != faces.end())
+      return true;
+  }
+  return false;
 }
 
 std::vector<int> Tracer::facesOutside(const MedialBall3D& ball, double radius) const
 {
   std::vector<int> out;
   for (int f : Tree.candidatesWithin(ball.x, radius))
-    if (std::find(ball.generators.begin(), ball.generators.end(), f) == ball.generators.end())
+    if (!attached(ball, f))
       out.push_back(f);
   return out;
+}
+
+// The reflex corner or edge generator at `foot`, a point on the border of `face`, or −1.
+int Tracer::reflexEntityAt(int face, const Vec3& foot) const
+{
+  const double near = 1e-9 * Size;
+  int best = -1;
+  for (size_t g = B.faces().size(); g < Generators.size(); ++g)
+  {
+    const Generator3D& gen = Generators[g];
+    const std::vector<int>& faces = gen.faces();
+    if (std::find(faces.begin(), faces.end(), face) == faces.end() || gen.distance(foot) > near)
+      continue;
+    if (gen.kind() == GeneratorKind::ReflexCorner)
+      return static_cast<int>(g); // a corner before the edges that end at it
+    best = static_cast<int>(g);
+  }
+  return best;
+}
+
+// The generator after reflex edge `edge` past its end `vertex`: the corner there, or the
+// reflex edge continuing it (a curved edge split between patches), or −1.
+int Tracer::beyondVertex(int edge, int vertex) const
+{
+  if (CornerGenerator[vertex] >= 0)
+    return CornerGenerator[vertex];
+  const Generator3D& from = Generators[EdgeGenerator[edge]];
+  const Vec3 here = from.evaluate(Vec2(B.edges()[edge].startVertex == vertex ? 0.0 : 1.0, 0.0)).point;
+  for (int e : B.vertices()[vertex].edges)
+  {
+    if (e == edge || EdgeGenerator[e] < 0)
+      continue;
+    // Continuing: the two edges' directions at the vertex are opposite.
+    const Generator3D& to = Generators[EdgeGenerator[e]];
+    const double t = B.edges()[e].startVertex == vertex ? 0.0 : 1.0;
+    const Vec3 a = from.evaluate(Vec2(B.edges()[edge].startVertex == vertex ? 0.0 : 1.0, 0.0)).dPoint.col(0);
+    const Vec3 b = to.evaluate(Vec2(t, 0.0)).dPoint.col(0);
+    if ((to.evaluate(Vec2(t, 0.0)).point - here).norm() <= 1e-9 * Size && std::abs(a.normalized().dot(b.normalized())) > 1.0 - 1e-9)
+      return EdgeGenerator[e];
+  }
+  return -1;
+}
+
+// Touch i of the ball has left its entity through `side` (Generator3D::exitSide): it goes
+// on to the entity beyond — the neighbour face across a smooth edge, the reflex edge at a
+// face's side, the face at either end of a reflex edge's normal arc, the corner (or the
+// continuing edge) at its end, the edge whose arc bounds a corner's cone.
+void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
+{
+  const int g = ball.generators[i];
+  const Generator3D& from = Generators[g];
+  const Vec3 p = from.evaluate(ball.q[i]).point;
+  int next = -1;
+  if (from.kind() == GeneratorKind::Face)
+  {
+    const auto e = SideEdge.find({ g, side });
+    if (e == SideEdge.end())
+      fail("3D MAT: the seam through ", describe(ball), " left ", from.name(), " through side ", side,
+        ", which no edge was matched to");
+    const Edge3D& edge = B.edges()[e->second];
+    if (edge.kind == VertexKind::Convex)
+      fail("3D MAT: the seam through ", describe(ball), " reached the convex edge between ",
+        B.faces()[edge.faceA].name(), " and ", B.faces()[edge.faceB].name(), " with a ball of radius > 0");
+    next = edge.kind == VertexKind::Smooth ? (edge.faceA == g ? edge.faceB : edge.faceA) : EdgeGenerator[e->second];
+  }
+  else if (from.kind() == GeneratorKind::ReflexEdge)
+  {
+    const Edge3D& edge = B.edges()[from.entity()];
+    if (side < 2)
+      next = side == 0 ? edge.faceA : edge.faceB;
+    else
+    {
+      const int vertex = side == 2 ? edge.startVertex : edge.endVertex;
+      next = beyondVertex(from.entity(), vertex);
+      if (next < 0)
+        fail("3D MAT: the seam through ", describe(ball), " reached the end of ", from.name(), " at ",
+          format(B.userPoint(B.vertices()[vertex].point)),
+          ", a corner with convex and reflex edges (or reflex ones without a normal cone): not supported yet");
+    }
+  }
+  else
+  {
+    next = EdgeGenerator[from.cornerEdges()[side]];
+  }
+  ball.generators[i] = next;
+  ball.q[i] = Generators[next].touchParameter(p, ball.x);
 }
 
 // The ball is empty of every face outside its generators (those touch it by construction;
@@ -134,8 +265,9 @@ int Tracer::reentering(const MedialBall3D& ball) const
   if (radius <= 0.0)
     return -1;
   for (int g : ball.generators)
-    if (!Generators[g].planar() && patchComesWithin(B.faces()[g].patch, ball.x, radius))
-      return g;
+    for (int f : Generators[g].faces())
+      if (!Generators[f].planar() && patchComesWithin(B.faces()[f].patch, ball.x, radius))
+        return f;
   return -1;
 }
 
@@ -224,10 +356,23 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
       inside = Generators[next.generators[i]].exitSide(next.q[i], Solve) < 0;
     if (!inside)
       continue;
+    // Three distinct touchpoints: two coplanar faces touching at their common (smooth)
+    // edge are one touchpoint, and such a triplet's solutions are a sheet's points.
+    Vec3 touch[3];
+    for (int i = 0; i < 3; ++i)
+      touch[i] = Generators[next.generators[i]].evaluate(next.q[i]).point;
+    const double same = 1e-6 * next.r;
+    if ((touch[0] - touch[1]).norm() <= same || (touch[0] - touch[2]).norm() <= same ||
+      (touch[1] - touch[2]).norm() <= same)
+      continue;
+    // The node's other generators stay outside the ball, or touch it where the triplet does.
     bool clear = true;
     for (int g : nb.generators)
-      if (std::find(t.begin(), t.end(), g) == t.end())
-        clear = clear && faceDistance(g, next.x) > next.r + Solve;
+      if (std::find(t.begin(), t.end(), g) == t.end() && faceDistance(g, next.x) <= next.r + Solve)
+      {
+        const Vec3 foot = Generators[g].nearestPoint(next.x);
+        clear = clear && std::min({ (foot - touch[0]).norm(), (foot - touch[1]).norm(), (foot - touch[2]).norm() }) <= same;
+      }
     if (!clear)
       continue;
     tangent = d;
@@ -285,10 +430,14 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
       // comes near its border: a coplanar neighbour's edge a hair from a touchpoint.
       const Vec3 normal = Generators[f].evaluate(Generators[f].parameterOf(foot)).normal;
       const bool tangent = (j.x - foot).cross(normal).norm() <= 1e-8 * footDistance;
-      if (distinct && tangent && footDistance <= j.r + 1e-10 * Size)
+      if (!distinct || footDistance > j.r + 1e-10 * Size)
+        continue;
+      // Touching at a reflex edge or corner of the face: that entity joins instead.
+      const int g = tangent ? f : reflexEntityAt(f, foot);
+      if (g >= 0 && std::find(j.generators.begin(), j.generators.end(), g) == j.generators.end())
       {
-        j.generators.push_back(f);
-        j.q.push_back(Generators[f].parameterOf(foot));
+        j.generators.push_back(g);
+        j.q.push_back(Generators[g].touchParameter(foot, j.x));
         added = true;
       }
     }
@@ -325,7 +474,8 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
     if (n + 1 == Options.maxStepsPerSeam)
       fail("3D MAT: the seam through ", describe(ball), " did not end within ", Options.maxStepsPerSeam, " steps");
     Eigen::VectorXd t = n == 0 ? tangent : System.tangent(ball);
-    if (t.dot(previous) < 0.0)
+    // Oriented by the centre and radius: the touch parameters change meaning across edges.
+    if (t.segment<4>(6).dot(previous.segment<4>(6)) < 0.0)
       t = -t;
     MedialBall3D next;
     if (!step(ball, t, h, next))
@@ -408,36 +558,24 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
         break;
       }
       const int face = at.generators[leaving];
-      const auto e = SideEdge.find({ face, side });
-      if (e == SideEdge.end())
-        fail("3D MAT: the seam through ", describe(at), " left ", B.faces()[face].name(), " through side ", side,
-          ", which no edge was matched to");
-      const Edge3D& edge = B.edges()[e->second];
-      if (edge.kind != VertexKind::Smooth)
-        fail("3D MAT: the seam through ", describe(at), " reached the ",
-          edge.kind == VertexKind::Reflex ? "reflex" : "convex", " edge between ",
-          B.faces()[edge.faceA].name(), " and ", B.faces()[edge.faceB].name(),
-          edge.kind == VertexKind::Reflex ? ": reflex edges are not supported yet" : " with a ball of radius > 0");
-      const int neighbour = edge.faceA == face ? edge.faceB : edge.faceA;
-      const Vec3 p = Generators[face].evaluate(at.q[leaving]).point;
-      at.generators[leaving] = neighbour;
-      at.q[leaving] = Generators[neighbour].parameterOf(p);
+      crossOver(at, leaving, side);
       if (!System.correct(at, Solve))
-        fail("3D MAT: the seam through ", describe(at), " could not cross onto ", B.faces()[neighbour].name());
+        fail("3D MAT: the seam through ", describe(at), " could not cross from ", Generators[face].name(), " onto ",
+          Generators[at.generators[leaving]].name());
 #ifdef EXACTMAT_TRACE3D_DEBUG
       std::fprintf(stderr, "  crossed from %d to %s\n", face, describe(at).c_str());
 #endif
       stalled = lo > 0.0 ? 0 : stalled + 1;
       if (stalled > 8)
         fail("3D MAT: the seam through ", describe(at), " keeps crossing edges without moving (",
-          B.faces()[face].name(), " and its neighbours)");
+          Generators[face].name(), " and its neighbours)");
       seam.balls.push_back(at);
       ball = at;
       previous = t;
       continue;
     }
     if (const int face = empty(next) ? reentering(next) : -1; face >= 0)
-      fail("3D MAT: the seam through ", describe(ball), " reaches a ball that ", B.faces()[face].name(),
+      fail("3D MAT: the seam through ", describe(ball), " reaches a ball that ", Generators[face].name(),
         " touches twice or curves into (a junction of one face with itself, or a skeletal edge): "
         "not supported yet");
     if (!empty(next))
@@ -459,6 +597,9 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
     h = std::min(hMax, h * 1.5);
   }
   seam.endNode = endNode;
+  // A ball pushed at a crossing a hair before the end node is the node itself.
+  while (seam.balls.size() > 2 && (seam.balls[seam.balls.size() - 2].x - seam.balls.back().x).norm() <= NodeMerge)
+    seam.balls.erase(seam.balls.end() - 2);
   // The seam's direction at its end node, away from it (the end ball's first three
   // generators are the arriving triplet).
   MedialBall3D end = seam.balls.back();
@@ -494,8 +635,8 @@ void Tracer::collectSheets()
     for (const auto& p : pairs)
     {
       MAT3DSheet& sheet = sheets[p];
-      sheet.faceA = p.first;
-      sheet.faceB = p.second;
+      sheet.generatorA = p.first;
+      sheet.generatorB = p.second;
       sheet.seams.push_back(s);
     }
   }
@@ -519,11 +660,12 @@ void Tracer::reportProgress()
   Reached.resize(B.faces().size(), false);
   for (const MedialBall3D& ball : Result.seams.back().balls)
     for (int g : ball.generators)
-      if (!Reached[g])
-      {
-        Reached[g] = true;
-        ++ReachedCount;
-      }
+      for (int f : Generators[g].faces())
+        if (!Reached[f])
+        {
+          Reached[f] = true;
+          ++ReachedCount;
+        }
   Options.progress(static_cast<double>(ReachedCount) / static_cast<double>(B.faces().size()));
 }
 
@@ -561,10 +703,10 @@ MAT3D Tracer::run()
 {
   for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
   {
+    // Seams start where a convex edge does: at convex vertices and at corners where convex
+    // and reflex edges meet (outgoing() keeps the triplets whose seam enters the solid).
     const Vertex3D& vertex = B.vertices()[v];
-    if (vertex.kind == VertexKind::Reflex)
-      fail("3D MAT: vertex ", v, " at ", format(vertex.point), " is reflex: reflex corners are not supported yet");
-    if (vertex.kind != VertexKind::Convex)
+    if (!hasEdgeOfKind(v, VertexKind::Convex))
       continue;
     MedialBall3D ball;
     for (int e : vertex.edges)
@@ -578,10 +720,6 @@ MAT3D Tracer::run()
     ball.r = 0.0;
     addNode(ball, v);
   }
-  for (const Edge3D& e : B.edges())
-    if (e.kind == VertexKind::Reflex)
-      fail("3D MAT: the edge between ", B.faces()[e.faceA].name(), " and ", B.faces()[e.faceB].name(),
-        " is reflex: reflex edges are not supported yet");
   if (Result.nodes.empty())
     fail("3D MAT: the solid has no convex vertex: starting elsewhere is not supported yet");
   for (size_t i = 0; i < Queue.size(); ++i)
@@ -604,12 +742,52 @@ MAT3D Tracer::run()
   for (const MAT3DSeam& seam : Result.seams)
     for (const MedialBall3D& ball : seam.balls)
       for (int g : ball.generators)
-        touched[root(g)] = true;
+        for (int f : Generators[g].faces())
+          touched[root(f)] = true;
   for (int f = 0; f < faces; ++f)
     if (!touched[root(f)])
       fail("3D MAT: no seam touches ", B.faces()[f].name(),
         ": its sheets are bounded only by edges, circles of contact or skeletal edges, which are not traced yet");
+  // Corners where convex and reflex edges meet are tried as starts; those no seam leaves
+  // are no node (a sheet reaches them, no seam does).
+  std::vector<int> seamsAt(Result.nodes.size(), 0), renumber(Result.nodes.size(), -1);
+  for (const MAT3DSeam& seam : Result.seams)
+  {
+    ++seamsAt[seam.startNode];
+    ++seamsAt[seam.endNode];
+  }
+  std::vector<MAT3DNode> kept;
+  for (size_t n = 0; n < Result.nodes.size(); ++n)
+    if (seamsAt[n] > 0 || Result.nodes[n].vertex < 0)
+    {
+      renumber[n] = static_cast<int>(kept.size());
+      kept.push_back(std::move(Result.nodes[n]));
+    }
+  Result.nodes = std::move(kept);
+  for (MAT3DSeam& seam : Result.seams)
+  {
+    seam.startNode = renumber[seam.startNode];
+    seam.endNode = renumber[seam.endNode];
+  }
+  // A junction's touchpoints: its generators' touches, those at one point counted once
+  // (coplanar faces meeting at a smooth edge under the ball, a face at a reflex edge).
+  for (MAT3DNode& node : Result.nodes)
+  {
+    Vec3List points;
+    for (int i = 0; i < node.ball.size(); ++i)
+    {
+      const Vec3 p = Generators[node.ball.generators[i]].evaluate(node.ball.q[i]).point;
+      bool seen = false;
+      for (const Vec3& other : points)
+        seen = seen || (other - p).norm() <= 1e-7 * Size;
+      if (!seen)
+        points.push_back(p);
+    }
+    node.touchpoints = static_cast<int>(points.size());
+  }
   collectSheets();
+  for (const Generator3D& g : Generators)
+    Result.generators.push_back({ g.kind(), g.entity(), g.faces() });
   return std::move(Result);
 }
 } // namespace
@@ -628,7 +806,7 @@ MedialComplex MAT3D::complex() const
     p.x = n.ball.x;
     p.radius = n.ball.r;
     p.type = n.vertex >= 0 ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
-    p.contacts = n.vertex >= 0 ? 0 : n.ball.size();
+    p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
     c.points.push_back(p);
     if (n.vertex < 0)
     {

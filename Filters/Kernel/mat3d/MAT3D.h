@@ -3,22 +3,29 @@
 /// @brief The seams and junctions of the MAT of a solid bounded by rational Bézier faces
 /// (thesis ch. 6), traced from the convex vertices.
 ///
-/// Nodes are the balls where seams start and end: convex vertices (radius 0; every face at
-/// the vertex touches) and junctions (four or more faces touch). From a node every triplet
-/// of its faces whose seam leaves the node into the solid is traced, once: the seam's
+/// The generators a ball touches are faces, reflex edges (zero-radius cylinders) and
+/// reflex corners (zero-radius spheres), all through Generator3D. Nodes are the balls where
+/// seams start and end: convex vertices and corners where convex edges meet reflex ones
+/// (radius 0; every face at the vertex touches) and junctions (four or more generators
+/// touch). From a node every triplet of its generators whose seam leaves the node into the
+/// solid is traced, once: the seam's
 /// direction is the null vector of the triplet's ball equations (BallSystem), valid when
 /// every other face of the node recedes from the ball along it. A seam is followed by
 /// pseudo-arclength continuation with steps controlled by the chord error; after every step
 /// the ball is tested for emptiness against the faces outside the triplet (exact Bernstein
 /// sign test through the BVH); a ball that is not empty brackets a junction, found by
 /// bisection and polished by Newton on the four-(or more-)face system. A seam ends at a
-/// junction or at a convex vertex (r = 0); a touchpoint crossing a smooth edge continues on
-/// the neighbouring face.
+/// junction or at a vertex (r = 0). A touchpoint leaving its entity continues on the one
+/// beyond: the neighbour face across a smooth edge, the reflex edge at a face's side (and
+/// back onto the other face at the end of its normal arc), the reflex corner at an edge's
+/// end (thesis app. C.2–C.3 as one code path).
 ///
-/// Supported today: solids whose faces meet at convex and smooth edges, with at least one
-/// convex vertex (polyhedra and free-form solids such as the pillow). Reflex edges and
-/// corners, skeletal edges (the curvature criterion) and solids without a convex vertex are
-/// reported as InputError naming what is missing, never traced wrongly.
+/// Supported today: solids with at least one convex edge ending at a vertex (polyhedra,
+/// stepped and notched blocks, free-form solids such as the pillow). Skeletal edges (the
+/// curvature criterion), a face touching one ball twice, seams reaching the end of a reflex
+/// edge at a corner that also has convex edges, and solids without such a vertex (the
+/// ellipsoid, the cylinder) are reported as InputError naming what is missing, never traced
+/// wrongly.
 
 #include "mat3d/BallSystem.h"
 #include "medial/MedialComplex.h"
@@ -43,7 +50,8 @@ struct MAT3DOptions
 struct MAT3DNode
 {
   MedialBall3D ball;     ///< every face touching (r = 0 at a convex vertex)
-  int vertex = -1;       ///< the convex vertex, or −1 for a junction
+  int vertex = -1;       ///< the vertex, or −1 for a junction
+  int touchpoints = 0;   ///< distinct points the ball touches (a point touched by two faces once)
   Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
 };
 
@@ -59,20 +67,31 @@ struct MAT3DSeam
 /// between them (where the sheet reaches the boundary with radius 0).
 struct MAT3DSheet
 {
-  int faceA = -1, faceB = -1; ///< face indices, faceA < faceB
+  int generatorA = -1, generatorB = -1; ///< indices into MAT3D::generators, A < B
   std::vector<int> seams;      ///< indices into MAT3D::seams
   std::vector<int> convexEdges; ///< indices into Boundary3D::edges()
 };
 
+/// A boundary entity medial balls touch. Generator indices (in balls, seams, sheets and
+/// the complex's governors) number the faces first (generator f = face f), then the reflex
+/// edges, then the reflex corners.
+struct MAT3DGenerator
+{
+  GeneratorKind kind = GeneratorKind::Face;
+  int entity = -1;        ///< face, edge or vertex index in the Boundary3D
+  std::vector<int> faces; ///< the faces it lies on (one, the edge's two, the corner's)
+};
+
 struct MAT3D
 {
+  std::vector<MAT3DGenerator> generators;
   std::vector<MAT3DNode> nodes;
   std::vector<MAT3DSeam> seams;
   std::vector<MAT3DSheet> sheets;
 
   int junctionCount() const;
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
-  /// (sharing the node points), governors = the seam's start triplet of face indices.
+  /// (sharing the node points), governors = the seam's start triplet of generators.
   MedialComplex complex() const;
 };
 
