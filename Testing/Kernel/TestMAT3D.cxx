@@ -39,7 +39,7 @@ struct Traced
     const Normalisation& n = boundary->userFrame();
     for (const MAT3DNode& node : mat.nodes)
       if (node.vertex < 0)
-        out.push_back({ n.toUser(node.ball.x), n.lengthToUser(node.ball.r), node.ball.size() });
+        out.push_back({ n.toUser(node.ball.x), n.lengthToUser(node.ball.r), node.touchpoints });
     return out;
   }
 };
@@ -376,20 +376,8 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
 
 namespace
 {
-// The prism over the L with legs 1 thick, [0, 2]² minus [1, 2]², from z = 0 to z = h; each
-// cap as two convex quadrilaterals (their common edge is flat: smooth).
-std::vector<PatchPiece> lPrism(double h)
-{
-  const Vec3List v{ Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0),
-    Vec3(0, 0, h), Vec3(2, 0, h), Vec3(2, 1, h), Vec3(1, 1, h), Vec3(1, 2, h), Vec3(0, 2, h) };
-  std::vector<std::vector<int>> faces{ { 3, 2, 1, 0 }, { 5, 4, 3, 0 }, { 6, 7, 8, 9 }, { 6, 9, 10, 11 } };
-  for (int i = 0; i < 6; ++i)
-    faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
-  return polyhedron(v, faces);
-}
-
-// How many seams of the MAT touch a reflex edge somewhere.
-int seamsTouchingReflexEdges(const MAT3D& mat)
+// How many seams of the MAT touch a generator of this kind somewhere.
+int seamsTouching(const MAT3D& mat, GeneratorKind kind)
 {
   int n = 0;
   for (const MAT3DSeam& s : mat.seams)
@@ -397,10 +385,18 @@ int seamsTouchingReflexEdges(const MAT3D& mat)
     bool touches = false;
     for (const MedialBall3D& b : s.balls)
       for (int g : b.generators)
-        touches = touches || mat.generators[g].kind == GeneratorKind::ReflexEdge;
+        touches = touches || mat.generators[g].kind == kind;
     n += touches;
   }
   return n;
+}
+
+bool hasJunction(const Traced& t, const Vec3& x, double r, int touchpoints, double tolerance = 1e-10)
+{
+  for (const Traced::Ball& j : t.junctions())
+    if ((j.x - x).norm() <= tolerance && std::abs(j.r - r) <= tolerance && j.touchpoints == touchpoints)
+      return true;
+  return false;
 }
 } // namespace
 
@@ -411,15 +407,9 @@ int seamsTouchingReflexEdges(const MAT3D& mat)
 TEST(MAT3D, LPrismHasSeamsAlongItsReflexEdge)
 {
   const double h = 2.5, c = 2.0 - std::sqrt(2.0);
-  const Traced t = trace(lPrism(h));
-  const std::vector<Traced::Ball> js = t.junctions();
-  auto found = [&](const Vec3& x, double r) {
-    for (const Traced::Ball& j : js)
-      if ((j.x - x).norm() <= 1e-10 && std::abs(j.r - r) <= 1e-10)
-        return true;
-    return false;
-  };
-  EXPECT_EQ(js.size(), 6u);
+  const Traced t = trace(lPrism(1.0, h));
+  auto found = [&](const Vec3& x, double r) { return hasJunction(t, x, r, 4); };
+  EXPECT_EQ(t.junctions().size(), 6u);
   for (double z : { 0.5, h - 0.5 })
   {
     EXPECT_TRUE(found(Vec3(1.5, 0.5, z), 0.5)) << z;
@@ -428,8 +418,28 @@ TEST(MAT3D, LPrismHasSeamsAlongItsReflexEdge)
   EXPECT_TRUE(found(Vec3(c, c, c), c));
   EXPECT_TRUE(found(Vec3(c, c, h - c), c));
   EXPECT_EQ(t.mat.generators.size(), t.boundary->faces().size() + 1) << "one reflex edge generator";
-  EXPECT_GE(seamsTouchingReflexEdges(t.mat), 2);
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexEdge), 2);
   expectVerified(t, "L prism");
+}
+
+// The cube [0, 2]³ with the corner cube [1, 2]³ cut away. The seam of the three faces at the
+// origin runs up the diagonal until the reflex corner (1, 1, 1) touches: at (k, k, k) with
+// k = √3 − √3·k, k = √3 / (1 + √3). Each reflex edge (say x = z = 1) meets the faces x = 0,
+// z = 0 and y = 2 at (c, 2 − c, c), c = 2 − √2; each notch face and the three outer faces
+// across it at (1.5, 1.5, 0.5) and its images, r = 1/2.
+TEST(MAT3D, NotchedCubeTouchesItsReflexCorner)
+{
+  const Traced t = trace(notchedCube(2.0, 1.0));
+  const double k = std::sqrt(3.0) / (1.0 + std::sqrt(3.0)), c = 2.0 - std::sqrt(2.0);
+  EXPECT_EQ(t.junctions().size(), 7u);
+  EXPECT_TRUE(hasJunction(t, Vec3(k, k, k), k, 4));
+  for (const Vec3& x : { Vec3(c, 2 - c, c), Vec3(2 - c, c, c), Vec3(c, c, 2 - c) })
+    EXPECT_TRUE(hasJunction(t, x, c, 4)) << x.transpose();
+  for (const Vec3& x : { Vec3(1.5, 1.5, 0.5), Vec3(1.5, 0.5, 1.5), Vec3(0.5, 1.5, 1.5) })
+    EXPECT_TRUE(hasJunction(t, x, 0.5, 4)) << x.transpose();
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexCorner), 3);
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexEdge), 6);
+  expectVerified(t, "notched cube");
 }
 
 TEST(MAT3D, InvariantUnderMotionScaleAndPosition)

@@ -389,10 +389,22 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
   MedialBall3D end;
   step(before, t, h, end);
   const std::vector<int> others = facesOutside(end, end.r + Margin);
+  // A face touching where a generator does (a coplanar neighbour across a smooth edge the
+  // touchpoint runs along) is no fourth touchpoint.
   auto gap = [&](const MedialBall3D& b) {
+    Vec3List touches;
+    for (int i = 0; i < b.size(); ++i)
+      touches.push_back(Generators[b.generators[i]].evaluate(b.q[i]).point);
     double d = Unbounded;
     for (int f : others)
-      d = std::min(d, faceDistance(f, b.x));
+    {
+      const Vec3 foot = Generators[f].nearestPoint(b.x);
+      bool distinct = true;
+      for (const Vec3& p : touches)
+        distinct = distinct && (foot - p).norm() > 1e-9 * Size;
+      if (distinct)
+        d = std::min(d, (foot - b.x).norm());
+    }
     return d - b.r;
   };
   double lo = 0.0, hi = h;

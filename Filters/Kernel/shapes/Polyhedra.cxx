@@ -1,5 +1,7 @@
 #include "Polyhedra.h"
 
+#include "common/InputError.h"
+
 #include <cmath>
 
 namespace exactmat
@@ -56,6 +58,48 @@ std::vector<PatchPiece> boxPolyhedron(double a, double b, double c)
     v.push_back(Vec3((i & 1) ? a : -a, (i & 2) ? b : -b, (i & 4) ? c : -c));
   return polyhedron(v, { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
                           { 1, 3, 7, 5 } });
+}
+
+std::vector<PatchPiece> notchedCube(double b, double a)
+{
+  if (!(a > 0.0 && a < b))
+    fail("notched cube: the notch corner ", a, " must lie inside the cube (0, ", b, ")");
+  Vec3List v;
+  auto at = [&v](double x, double y, double z) {
+    const Vec3 p(x, y, z);
+    for (size_t i = 0; i < v.size(); ++i)
+      if (v[i] == p)
+        return static_cast<int>(i);
+    v.push_back(p);
+    return static_cast<int>(v.size()) - 1;
+  };
+  // Every vertex on a face's border is in its loop, so the faces conform.
+  const std::vector<std::vector<int>> faces{
+    { at(0, 0, 0), at(0, b, 0), at(b, b, 0), at(b, 0, 0) },                                  // z = 0
+    { at(0, 0, 0), at(0, b, 0), at(0, b, a), at(0, b, b), at(0, 0, b) },                     // x = 0
+    { at(0, 0, 0), at(b, 0, 0), at(b, 0, a), at(b, 0, b), at(a, 0, b), at(0, 0, b) },        // y = 0
+    { at(0, 0, b), at(a, 0, b), at(a, a, b), at(a, b, b), at(0, b, b) },                     // z = b
+    { at(a, 0, b), at(b, 0, b), at(b, a, b), at(a, a, b) },
+    { at(b, 0, 0), at(b, b, 0), at(b, b, a), at(b, a, a), at(b, 0, a) },                     // x = b
+    { at(b, 0, a), at(b, a, a), at(b, a, b), at(b, 0, b) },
+    { at(0, b, 0), at(0, b, a), at(a, b, a), at(b, b, a), at(b, b, 0) },                     // y = b
+    { at(0, b, a), at(0, b, b), at(a, b, b), at(a, b, a) },
+    { at(a, a, a), at(a, a, b), at(a, b, b), at(a, b, a) },                                  // the notch
+    { at(a, a, a), at(b, a, a), at(b, a, b), at(a, a, b) },
+    { at(a, a, a), at(a, b, a), at(b, b, a), at(b, a, a) },
+  };
+  return polyhedron(v, faces);
+}
+
+std::vector<PatchPiece> lPrism(double b, double h)
+{
+  const double c = 2.0 * b;
+  const Vec3List v{ Vec3(0, 0, 0), Vec3(c, 0, 0), Vec3(c, b, 0), Vec3(b, b, 0), Vec3(b, c, 0), Vec3(0, c, 0),
+    Vec3(0, 0, h), Vec3(c, 0, h), Vec3(c, b, h), Vec3(b, b, h), Vec3(b, c, h), Vec3(0, c, h) };
+  std::vector<std::vector<int>> faces{ { 3, 2, 1, 0 }, { 5, 4, 3, 0 }, { 6, 7, 8, 9 }, { 6, 9, 10, 11 } };
+  for (int i = 0; i < 6; ++i)
+    faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
+  return polyhedron(v, faces);
 }
 
 std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n)

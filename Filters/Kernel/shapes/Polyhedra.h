@@ -25,6 +25,16 @@ std::vector<PatchPiece> boxPolyhedron(double a, double b, double c);
 /// meeting four planar ones along straight convex edges.
 std::vector<PatchPiece> boxWithFreeFormTop(double a, double b, double c, double bulge, double tilt);
 
+/// The cube [0, b]³ with the corner cube [a, b]³ cut away (0 < a < b): three reflex edges
+/// meeting at a reflex corner (a, a, a), and corners where they meet convex edges. Faces:
+/// the three full sides, the three L-shaped sides each as two convex polygons (their common
+/// edge is flat), the three notch squares.
+std::vector<PatchPiece> notchedCube(double b, double a);
+
+/// The prism over the L [0, 2b]² minus [b, 2b]² (legs b thick) from z = 0 to z = h: one
+/// reflex edge (x = y = b), each cap as two convex quadrilaterals.
+std::vector<PatchPiece> lPrism(double b, double h);
+
 /// A truncated pyramid: a convex n-gon (vertices on a random ellipse at random angles) in
 /// z = 0 and its image under a random homothety (ratio 0.3 … 0.9) moved up by 0.5 … 2: planar
 /// trapezoid sides, convex; the caps are fans of n triangles.
