@@ -2,6 +2,9 @@
 // forms, an independent brute-force junction search, and the exact boundary.
 #include "brep/NormalisePieces.h"
 #include "common/InputError.h"
+#include "mat25d/MAT25D.h"
+#include "mat25d/SweptSolid.h"
+#include "mat2d/Tracer.h"
 #include "mat3d/MAT3D.h"
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
@@ -377,7 +380,7 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
 namespace
 {
 // How many seams of the MAT touch a generator of this kind somewhere.
-int seamsTouching(const MAT3D& mat, GeneratorKind kind)
+int seamsTouching(const MAT3D& mat, GeneratorKind3D kind)
 {
   int n = 0;
   for (const MAT3DSeam& s : mat.seams)
@@ -418,7 +421,7 @@ TEST(MAT3D, LPrismHasSeamsAlongItsReflexEdge)
   EXPECT_TRUE(found(Vec3(c, c, c), c));
   EXPECT_TRUE(found(Vec3(c, c, h - c), c));
   EXPECT_EQ(t.mat.generators.size(), t.boundary->faces().size() + 1) << "one reflex edge generator";
-  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexEdge), 2);
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind3D::ReflexEdge), 2);
   expectVerified(t, "L prism");
 }
 
@@ -437,9 +440,34 @@ TEST(MAT3D, NotchedCubeTouchesItsReflexCorner)
     EXPECT_TRUE(hasJunction(t, x, c, 4)) << x.transpose();
   for (const Vec3& x : { Vec3(1.5, 1.5, 0.5), Vec3(1.5, 0.5, 1.5), Vec3(0.5, 1.5, 1.5) })
     EXPECT_TRUE(hasJunction(t, x, 0.5, 4)) << x.transpose();
-  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexCorner), 3);
-  EXPECT_GE(seamsTouching(t.mat, GeneratorKind::ReflexEdge), 6);
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind3D::ReflexCorner), 3);
+  EXPECT_GE(seamsTouching(t.mat, GeneratorKind3D::ReflexEdge), 6);
   expectVerified(t, "notched cube");
+}
+
+// Cross-check with the 2.5D construction: a polygonal profile extruded, its faces as the
+// swept solid builds them (caps tiled by the profile MAT's chords: hundreds of coplanar
+// pieces), traced as a general solid. The junctions must be the 2.5D MAT's, one for one.
+TEST(MAT3D, ExtrudedPolygonsAgreeWithTheSweptSolidMAT)
+{
+  for (const auto& [name, length] : { std::pair<std::string, double>{ "l-shape", 2.5 }, { "star", 2.0 }, { "rectangle", 3.0 } })
+  {
+    const Boundary2D profile = Boundary2D::build(curvePieces(makeShape(name).curves));
+    const Generators generators(profile);
+    const MedialGraph graph = computeMAT2D(generators);
+    const SweepMap sweep(profile, Sweep::extrusion(length));
+    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
+    std::vector<MedialPoint3D> expected;
+    for (const MedialElement& e : swept.elements)
+      if (e.type == MedialElementType::Junction)
+        expected.push_back(swept.points[e.points.front()]);
+    const Traced t = trace(sweptSolidFaces(generators, graph, sweep));
+    EXPECT_GT(t.boundary->countEdges(VertexKind::Reflex) + (name == "rectangle"), 0) << name;
+    EXPECT_EQ(t.junctions().size(), expected.size()) << name;
+    for (const MedialPoint3D& p : expected)
+      EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts)) << name << ": " << p.x.transpose();
+    expectVerified(t, name + " extruded");
+  }
 }
 
 TEST(MAT3D, InvariantUnderMotionScaleAndPosition)

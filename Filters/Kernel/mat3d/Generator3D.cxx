@@ -53,7 +53,7 @@ void frameAbout(const Vec3& n, Vec3& a, Vec3& b)
 }
 } // namespace
 
-Generator3D::Generator3D(const Boundary3D& boundary, GeneratorKind kind, int entity)
+Generator3D::Generator3D(const Boundary3D& boundary, GeneratorKind3D kind, int entity)
   : Boundary(&boundary)
   , Kind(kind)
   , Entity(entity)
@@ -62,7 +62,7 @@ Generator3D::Generator3D(const Boundary3D& boundary, GeneratorKind kind, int ent
 
 Generator3D Generator3D::reflexEdge(const Boundary3D& boundary, int edge)
 {
-  Generator3D g(boundary, GeneratorKind::ReflexEdge, edge);
+  Generator3D g(boundary, GeneratorKind3D::ReflexEdge, edge);
   const Edge3D& e = boundary.edges()[edge];
   g.Faces = { e.faceA, e.faceB };
   g.EdgeCurve = boundary.faces()[e.faceA].patch.side(e.sideA);
@@ -80,7 +80,7 @@ Generator3D Generator3D::reflexEdge(const Boundary3D& boundary, int edge)
 
 Generator3D Generator3D::reflexCorner(const Boundary3D& boundary, int vertex)
 {
-  Generator3D g(boundary, GeneratorKind::ReflexCorner, vertex);
+  Generator3D g(boundary, GeneratorKind3D::ReflexCorner, vertex);
   const Vertex3D& v = boundary.vertices()[vertex];
   g.Origin = v.point;
   Vec3 sum = Vec3::Zero();
@@ -108,7 +108,7 @@ Generator3D Generator3D::reflexCorner(const Boundary3D& boundary, int vertex)
 
 bool Generator3D::cornerHasCone() const
 {
-  if (Kind != GeneratorKind::ReflexCorner || CornerTangents.size() < 3 || Inward.norm() == 0.0)
+  if (Kind != GeneratorKind3D::ReflexCorner || CornerTangents.size() < 3 || Inward.norm() == 0.0)
     return false;
   for (const Vec3& tau : CornerTangents)
     if (!(Inward.dot(tau) < -1e-6))
@@ -202,9 +202,9 @@ Touch3D Generator3D::evaluate(const Vec2& q) const
 {
   switch (Kind)
   {
-    case GeneratorKind::ReflexEdge:
+    case GeneratorKind3D::ReflexEdge:
       return evaluateEdge(q);
-    case GeneratorKind::ReflexCorner:
+    case GeneratorKind3D::ReflexCorner:
       return evaluateCorner(q);
     default:
       return evaluateFace(q);
@@ -287,7 +287,7 @@ Touch3D Generator3D::evaluateCorner(const Vec2& q) const
 
 Vec2 Generator3D::parameterOf(const Vec3& x) const
 {
-  if (Kind != GeneratorKind::Face)
+  if (Kind != GeneratorKind3D::Face)
     return touchParameter(nearestPoint(x), x);
   if (Planar)
     return Vec2((x - Origin).dot(Axis0), (x - Origin).dot(Axis1));
@@ -297,10 +297,10 @@ Vec2 Generator3D::parameterOf(const Vec3& x) const
 
 Vec2 Generator3D::touchParameter(const Vec3& foot, const Vec3& centre) const
 {
-  if (Kind == GeneratorKind::Face)
+  if (Kind == GeneratorKind3D::Face)
     return parameterOf(foot);
   const Vec3 d = centre - foot;
-  if (Kind == GeneratorKind::ReflexCorner)
+  if (Kind == GeneratorKind3D::ReflexCorner)
   {
     const double along = d.dot(Inward);
     if (!(along > 0.0))
@@ -325,13 +325,13 @@ Vec2 Generator3D::touchParameter(const Vec3& foot, const Vec3& centre) const
 int Generator3D::exitSide(const Vec2& q, double tolerance) const
 {
   const double slack = tolerance / Boundary->diagonal();
-  if (Kind == GeneratorKind::ReflexEdge)
+  if (Kind == GeneratorKind3D::ReflexEdge)
   {
     const double out[4] = { -q.y(), q.y() - edgeAngle(q.x()), -q.x(), q.x() - 1.0 };
     const int worst = static_cast<int>(std::max_element(out, out + 4) - out);
     return out[worst] > slack ? worst : -1;
   }
-  if (Kind == GeneratorKind::ReflexCorner)
+  if (Kind == GeneratorKind3D::ReflexCorner)
   {
     const Vec3 n = evaluateCorner(q).normal;
     int worst = -1;
@@ -388,9 +388,9 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
 
 Vec3 Generator3D::nearestPoint(const Vec3& x) const
 {
-  if (Kind == GeneratorKind::ReflexCorner)
+  if (Kind == GeneratorKind3D::ReflexCorner)
     return Origin;
-  if (Kind == GeneratorKind::ReflexEdge)
+  if (Kind == GeneratorKind3D::ReflexEdge)
   {
     if (!Straight)
       return closestPoint(EdgeCurve, x).point;
@@ -422,7 +422,7 @@ Vec3 Generator3D::nearestPoint(const Vec3& x) const
 
 double Generator3D::distance(const Vec3& x) const
 {
-  if (Kind != GeneratorKind::Face)
+  if (Kind != GeneratorKind3D::Face)
     return (nearestPoint(x) - x).norm();
   if (Polygon.empty())
     return closestPoint(Boundary->faces()[Entity].patch, x).distance;
@@ -431,10 +431,10 @@ double Generator3D::distance(const Vec3& x) const
 
 std::string Generator3D::name() const
 {
-  if (Kind == GeneratorKind::Face)
+  if (Kind == GeneratorKind3D::Face)
     return Boundary->faces()[Entity].name();
   std::ostringstream s;
-  if (Kind == GeneratorKind::ReflexEdge)
+  if (Kind == GeneratorKind3D::ReflexEdge)
     s << "the reflex edge between " << Boundary->faces()[Faces[0]].name() << " and "
       << Boundary->faces()[Faces[1]].name();
   else

@@ -37,7 +37,7 @@ struct Touch3D
   Eigen::Matrix<double, 3, 2> dNormal = Eigen::Matrix<double, 3, 2>::Zero();
 };
 
-enum class GeneratorKind
+enum class GeneratorKind3D
 {
   Face,
   ReflexEdge,
@@ -54,7 +54,7 @@ public:
   /// The corner at vertex `vertex`, whose non-smooth edges are all reflex.
   static Generator3D reflexCorner(const Boundary3D& boundary, int vertex);
 
-  GeneratorKind kind() const { return Kind; }
+  GeneratorKind3D kind() const { return Kind; }
   /// The face, edge or vertex index, by kind.
   int entity() const { return Entity; }
   /// The faces the entity lies on (the face; the edge's two; every face at the corner):
@@ -98,7 +98,7 @@ public:
   std::string name() const;
 
 private:
-  Generator3D(const Boundary3D& boundary, GeneratorKind kind, int entity);
+  Generator3D(const Boundary3D& boundary, GeneratorKind3D kind, int entity);
   void setPolygon(const BezierPatch& patch, double size);
   Touch3D evaluateFace(const Vec2& q) const;
   Touch3D evaluateEdge(const Vec2& q) const;
@@ -107,7 +107,7 @@ private:
   void edgeNormal(int which, double t, Vec3& normal, Vec3& derivative) const;
 
   const Boundary3D* Boundary;
-  GeneratorKind Kind = GeneratorKind::Face;
+  GeneratorKind3D Kind = GeneratorKind3D::Face;
   int Entity = -1;
   std::vector<int> Faces;
   bool Planar = false;

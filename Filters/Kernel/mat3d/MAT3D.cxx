@@ -98,8 +98,8 @@ private:
   int addNode(const MedialBall3D& ball, int vertex);
   int findNode(const Vec3& x) const;
   void startFrom(int node);
-  bool outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent) const;
-  void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent);
+  bool outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
+  void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
   std::string describe(const MedialBall3D& ball) const;
@@ -166,7 +166,7 @@ int Tracer::reflexEntityAt(int face, const Vec3& foot) const
     const std::vector<int>& faces = gen.faces();
     if (std::find(faces.begin(), faces.end(), face) == faces.end() || gen.distance(foot) > near)
       continue;
-    if (gen.kind() == GeneratorKind::ReflexCorner)
+    if (gen.kind() == GeneratorKind3D::ReflexCorner)
       return static_cast<int>(g); // a corner before the edges that end at it
     best = static_cast<int>(g);
   }
@@ -206,7 +206,7 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
   const Generator3D& from = Generators[g];
   const Vec3 p = from.evaluate(ball.q[i]).point;
   int next = -1;
-  if (from.kind() == GeneratorKind::Face)
+  if (from.kind() == GeneratorKind3D::Face)
   {
     const auto e = SideEdge.find({ g, side });
     if (e == SideEdge.end())
@@ -218,7 +218,7 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
         B.faces()[edge.faceA].name(), " and ", B.faces()[edge.faceB].name(), " with a ball of radius > 0");
     next = edge.kind == VertexKind::Smooth ? (edge.faceA == g ? edge.faceB : edge.faceA) : EdgeGenerator[e->second];
   }
-  else if (from.kind() == GeneratorKind::ReflexEdge)
+  else if (from.kind() == GeneratorKind3D::ReflexEdge)
   {
     const Edge3D& edge = B.edges()[from.entity()];
     if (side < 2)
@@ -313,7 +313,7 @@ bool Tracer::step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
 // The seam of triplet t leaves the node along ±(null vector) when every other face of the
 // node recedes from the ball (first order: N_g·dX − dr > 0) and a short trial step keeps
 // the touchpoints on their faces and the ball clear of the node's other faces.
-bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent) const
+bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const
 {
   const MedialBall3D& nb = node.ball;
   ball = MedialBall3D();
@@ -365,16 +365,36 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
     if ((touch[0] - touch[1]).norm() <= same || (touch[0] - touch[2]).norm() <= same ||
       (touch[1] - touch[2]).norm() <= same)
       continue;
-    // The node's other generators stay outside the ball, or touch it where the triplet does.
+    // The node's other generators stay outside the ball. Some may keep touching it: where
+    // the triplet does (coplanar faces), or elsewhere along a degenerate seam (the axis of
+    // an extruded star, touching five reflex edges): those count as touchpoints of the seam.
     bool clear = true;
+    Vec3List points(touch, touch + 3);
     for (int g : nb.generators)
-      if (std::find(t.begin(), t.end(), g) == t.end() && faceDistance(g, next.x) <= next.r + Solve)
+    {
+      if (std::find(t.begin(), t.end(), g) != t.end())
+        continue;
+      const double d = faceDistance(g, next.x);
+      clear = clear && d >= next.r - Degenerate;
+      if (d > next.r + Degenerate)
+        continue;
+      const Vec3 foot = Generators[g].nearestPoint(next.x);
+      // (A foot a small fraction of the radius from a touchpoint is the same contact: a
+      // coplanar neighbour whose common edge runs almost along the seam's touchpoint.)
+      bool seen = false;
+      for (const Vec3& p : points)
+        seen = seen || (p - foot).norm() <= 0.05 * next.r;
+      if (!seen)
       {
-        const Vec3 foot = Generators[g].nearestPoint(next.x);
-        clear = clear && std::min({ (foot - touch[0]).norm(), (foot - touch[1]).norm(), (foot - touch[2]).norm() }) <= same;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+        std::fprintf(stderr, "co-touch: gen %d d-r %.3g at node r %.3g next r %.3g\n", g, d - next.r, nb.r, next.r);
+#endif
+        points.push_back(foot);
       }
+    }
     if (!clear)
       continue;
+    touchpoints = static_cast<int>(points.size());
     tangent = d;
     return true;
   }
@@ -388,7 +408,12 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
 {
   MedialBall3D end;
   step(before, t, h, end);
-  const std::vector<int> others = facesOutside(end, end.r + Margin);
+  // Faces already touching `before` (empty) keep touching along a degenerate seam (the
+  // extruded star's axis, five reflex edges): they bracket nothing.
+  std::vector<int> others;
+  for (int f : facesOutside(end, end.r + Margin))
+    if (faceDistance(f, before.x) > before.r + Degenerate)
+      others.push_back(f);
   // A face touching where a generator does (a coplanar neighbour across a smooth edge the
   // touchpoint runs along) is no fourth touchpoint.
   auto gap = [&](const MedialBall3D& b) {
@@ -470,9 +495,10 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
   return j;
 }
 
-void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent)
+void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints)
 {
   MAT3DSeam seam;
+  seam.touchpoints = touchpoints;
   seam.faces = { ball.generators[0], ball.generators[1], ball.generators[2] };
   seam.startNode = startNode;
   seam.balls.push_back(ball); // the node's ball restricted to the triplet
@@ -694,7 +720,8 @@ void Tracer::startFrom(int node)
           continue;
         MedialBall3D ball;
         Eigen::VectorXd tangent;
-        if (!outgoing(Result.nodes[node], t, ball, tangent))
+        int touchpoints = 3;
+        if (!outgoing(Result.nodes[node], t, ball, tangent, touchpoints))
           continue;
         Traced.insert({ node, t });
         // Two triplets with one seam: coplanar faces (a planar face split into triangles)
@@ -706,7 +733,7 @@ void Tracer::startFrom(int node)
         if (taken)
           continue;
         Result.nodes[node].directions.push_back(d);
-        trace(node, ball, tangent);
+        trace(node, ball, tangent, touchpoints);
         reportProgress();
       }
 }
@@ -841,7 +868,7 @@ MedialComplex MAT3D::complex() const
       p.x = s.balls[i].x;
       p.radius = s.balls[i].r;
       p.type = MedialPoint3DType::Seam;
-      p.contacts = 3;
+      p.contacts = s.touchpoints;
       c.points.push_back(p);
       e.points.push_back(static_cast<int>(c.points.size()) - 1);
     }

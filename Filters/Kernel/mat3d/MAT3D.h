@@ -59,6 +59,9 @@ struct MAT3DSeam
 {
   std::array<int, 3> faces{ { -1, -1, -1 } }; ///< the triplet at the seam's start
   int startNode = -1, endNode = -1;
+  /// Distinct points each ball touches: 3, more along a degenerate seam (a symmetric solid's
+  /// axis, where more generators than the triplet keep touching).
+  int touchpoints = 3;
   std::vector<MedialBall3D> balls; ///< from start node to end node, both included
 };
 
@@ -77,7 +80,7 @@ struct MAT3DSheet
 /// edges, then the reflex corners.
 struct MAT3DGenerator
 {
-  GeneratorKind kind = GeneratorKind::Face;
+  GeneratorKind3D kind = GeneratorKind3D::Face;
   int entity = -1;        ///< face, edge or vertex index in the Boundary3D
   std::vector<int> faces; ///< the faces it lies on (one, the edge's two, the corner's)
 };
