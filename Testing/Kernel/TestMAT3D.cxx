@@ -443,6 +443,13 @@ TEST(MAT3D, NotchedCubeTouchesItsReflexCorner)
   EXPECT_GE(seamsTouching(t.mat, GeneratorKind3D::ReflexCorner), 3);
   EXPECT_GE(seamsTouching(t.mat, GeneratorKind3D::ReflexEdge), 6);
   expectVerified(t, "notched cube");
+  // The catalogue's notched cube (edge 4, centred, squares of a 2 × 2 × 2 grid: smooth edges
+  // everywhere) is the same solid scaled by 2 and moved by (−2, −2, −2).
+  const Traced catalogue = trace(patchPieces(makeShape("notched-cube").surfaces));
+  EXPECT_EQ(catalogue.junctions().size(), t.junctions().size());
+  for (const Traced::Ball& j : t.junctions())
+    EXPECT_TRUE(hasJunction(catalogue, 2.0 * j.x - Vec3(2, 2, 2), 2.0 * j.r, j.touchpoints)) << j.x.transpose();
+  expectVerified(catalogue, "catalogue notched cube");
 }
 
 // Cross-check with the 2.5D construction: a polygonal profile extruded, its faces as the

@@ -152,6 +152,27 @@ class ExactmatCLI(unittest.TestCase):
             self.assertEqual(len(junction_radii), 4)
             for value in junction_radii:
                 self.assertAlmostEqual(value, 1.0, places=12)
+            # Reflex edges and a reflex corner: the notched cube (edge 4, centred, the
+            # (+, +, +) eighth cut away). The seam up the diagonal from (-2, -2, -2) meets
+            # the reflex corner at the origin where sqrt(3) (2 - r) = r: radius
+            # k = 2 sqrt(3) / (1 + sqrt(3)), centre (-2 + k) (1, 1, 1).
+            r = run("3d", "--shape", "notched-cube", "-o", "notch.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("3 reflex", r.stdout)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 7)
+            self.assertIn("verification        passed", r.stdout)
+            reader.SetFileName(os.path.join(tmp, "notch.vtp"))
+            reader.Update()
+            out = reader.GetOutput()
+            radius = out.GetPointData().GetArray("Radius")
+            kinds = out.GetPointData().GetArray("PointType")
+            k = 2.0 * math.sqrt(3.0) / (1.0 + math.sqrt(3.0))
+            diagonal = [i for i in range(out.GetNumberOfPoints()) if kinds.GetValue(i) == 2
+                        and abs(radius.GetValue(i) - k) < 1e-9]
+            self.assertEqual(len(diagonal), 1)
+            x = out.GetPoint(diagonal[0])
+            for c in x:
+                self.assertAlmostEqual(c, -2.0 + k, places=9)
             # A solid the 3D tracer cannot do yet is refused with exit 1 and the reason.
             r = run("3d", "--shape", "cylinder", "-o", "c.vtp", cwd=tmp)
             self.assertEqual(r.returncode, 1)

@@ -632,9 +632,11 @@ int run3D(const Arguments& a)
     return ExitOutputError;
   const exactmat::Boundary3D b = exactmat::buildNormalised(exactmat::patchPiecesFromGrid(solid));
   std::printf("ExactMAT 3D medial axis transform (seams and junctions) of %s\n", label.c_str());
-  std::printf("  boundary            %zu faces, %d convex / %d smooth edges, %d convex vertices, size %.6g\n",
-    b.faces().size(), b.countEdges(exactmat::VertexKind::Convex), b.countEdges(exactmat::VertexKind::Smooth),
-    b.countVertices(exactmat::VertexKind::Convex), b.userFrame().lengthToUser(b.diagonal()));
+  std::printf("  boundary            %zu faces, %d convex / %d reflex / %d smooth edges, %d convex / %d reflex "
+              "vertices, size %.6g\n",
+    b.faces().size(), b.countEdges(exactmat::VertexKind::Convex), b.countEdges(exactmat::VertexKind::Reflex),
+    b.countEdges(exactmat::VertexKind::Smooth), b.countVertices(exactmat::VertexKind::Convex),
+    b.countVertices(exactmat::VertexKind::Reflex), b.userFrame().lengthToUser(b.diagonal()));
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
   std::printf("  sheets              %d (face pairs and their bounding seams; surfaces not yet)\n",

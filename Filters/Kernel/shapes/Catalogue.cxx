@@ -126,6 +126,50 @@ std::vector<NurbsSurface> boxFaces(double w, double h, double l)
   };
 }
 
+// The cube of edge w centred at the origin with the corner cube of edge w/2 at (+, +, +) cut
+// away: the boundary of seven cells of a 2 × 2 × 2 grid, one square per exposed cell side
+// (coplanar squares meet at smooth edges; three reflex edges meet at the reflex corner at
+// the origin).
+std::vector<NurbsSurface> notchedCubeFaces(double w)
+{
+  const double s = w / 2;
+  auto filled = [](int i, int j, int k) {
+    return i >= 0 && i < 2 && j >= 0 && j < 2 && k >= 0 && k < 2 && !(i == 1 && j == 1 && k == 1);
+  };
+  std::vector<NurbsSurface> faces;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k)
+      {
+        if (!filled(i, j, k))
+          continue;
+        const int cell[3] = { i, j, k };
+        for (int a = 0; a < 3; ++a)
+          for (int side : { -1, 1 })
+          {
+            int next[3] = { i, j, k };
+            next[a] += side;
+            if (filled(next[0], next[1], next[2]))
+              continue;
+            // Corners (u, v) along the two other axes b, c with e_b × e_c = e_a:
+            // counter-clockwise seen from outside on the + side, reversed on the − side.
+            const int b = (a + 1) % 3, c = (a + 2) % 3;
+            auto corner = [&](int u, int v) {
+              Vec3 p;
+              p[a] = (cell[a] + (side > 0 ? 1 : 0)) * s - s;
+              p[b] = (cell[b] + u) * s - s;
+              p[c] = (cell[c] + v) * s - s;
+              return p;
+            };
+            if (side > 0)
+              faces.push_back(quad(corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)));
+            else
+              faces.push_back(quad(corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)));
+          }
+      }
+  return faces;
+}
+
 // A disk of radius r at height z as one rational biquadratic patch whose four sides are the
 // quarter arcs 225°→315°, 315°→45°, 45°→135°, 135°→225°, i.e. the same arcs as the sides
 // of the cylinder. The centre weight 1/2 is the tensor product of the arc weights.
@@ -252,7 +296,7 @@ const std::vector<std::string>& catalogueNames()
 {
   static const std::vector<std::string> names{ "rectangle", "rounded-rectangle", "circle",
     "ellipse", "annulus", "l-shape", "star", "blob", "spiral", "plate-with-holes",
-    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution" };
+    "narrow-passage", "box", "notched-cube", "cylinder", "pillow", "extrusion", "revolution" };
   return names;
 }
 
@@ -405,6 +449,12 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
     requirePositive(s.length, "length", name);
     shape.dimension = 3;
     shape.surfaces = boxFaces(w, h, s.length);
+  }
+  else if (name == "notched-cube")
+  {
+    requirePositive(w, "width", name);
+    shape.dimension = 3;
+    shape.surfaces = notchedCubeFaces(w);
   }
   else if (name == "cylinder")
   {

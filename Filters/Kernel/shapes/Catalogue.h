@@ -20,7 +20,7 @@ namespace exactmat
 /// Parameters of the catalogue shapes. Each shape documents which it uses.
 struct ShapeParameters
 {
-  double width = 4.0;        ///< x extent (rectangle, rounded rectangle, ellipse 2a, L, plate, box)
+  double width = 4.0;        ///< x extent (rectangle, rounded rectangle, ellipse 2a, L, plate, box, notched cube)
   double height = 2.0;       ///< y extent (same shapes; ellipse 2b)
   double length = 3.0;       ///< z extent of box, cylinder and extrusion
   double radius = 1.0;       ///< circle, annulus outer, star outer, cylinder, lobes, blob mean
@@ -41,8 +41,9 @@ struct Shape
 };
 
 /// Names accepted by makeShape, 2D first: rectangle, rounded-rectangle, circle, ellipse,
-/// annulus, l-shape, star, blob, spiral, plate-with-holes, narrow-passage, box, cylinder,
-/// pillow, extrusion, revolution.
+/// annulus, l-shape, star, blob, spiral, plate-with-holes, narrow-passage, box,
+/// notched-cube (edge = width, the (+, +, +) eighth cut away), cylinder, pillow, extrusion,
+/// revolution.
 const std::vector<std::string>& catalogueNames();
 
 /// Builds the named shape; throws InputError for an unknown name or parameters that make
