@@ -98,6 +98,8 @@ void expectVerified(const Traced& t, const std::string& what)
     ASSERT_GE(s.endNode, 0) << what;
     parent[root(s.startNode)] = root(s.endNode);
   }
+  for (const MAT3DSkeletalEdge& s : t.mat.skeletalEdges)
+    parent[root(s.startNode)] = root(s.endNode);
   int components = 0;
   for (size_t i = 0; i < parent.size(); ++i)
     components += root(static_cast<int>(i)) == static_cast<int>(i);

@@ -90,6 +90,8 @@ private:
   int reflexEntityAt(int face, const Vec3& foot) const;
   int beyondVertex(int edge, int vertex) const;
   void crossOver(MedialBall3D& ball, int i, int side) const;
+  bool merging(const MedialBall3D& ball, int& a, int& b) const;
+  int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
   // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
   std::vector<int> facesOutside(const MedialBall3D& ball, double radius) const;
@@ -196,6 +198,74 @@ int Tracer::beyondVertex(int edge, int vertex) const
   return -1;
 }
 
+// Two of the ball's touchpoints at one point (a and b: their indices in the ball).
+bool Tracer::merging(const MedialBall3D& ball, int& a, int& b) const
+{
+  for (int i = 0; i < ball.size(); ++i)
+    for (int j = i + 1; j < ball.size(); ++j)
+      if ((Generators[ball.generators[i]].evaluate(ball.q[i]).point -
+            Generators[ball.generators[j]].evaluate(ball.q[j]).point)
+            .norm() <= 1e-9 * Size)
+      {
+        a = i;
+        b = j;
+        return true;
+      }
+  return false;
+}
+
+// The seam through `ball` ends where touches a and b merged. At a vertex of the solid the
+// sheet between them closes along a straight rim, the balls touching the vertex only
+// (centre = vertex + s·normal, radius s): added from the new seam end down to the vertex.
+int Tracer::seamEndAtVertex(const MedialBall3D& ball, int a, int b)
+{
+  const Vec3 p = Generators[ball.generators[a]].evaluate(ball.q[a]).point;
+  int vertex = -1;
+  for (int v = 0; v < static_cast<int>(B.vertices().size()) && vertex < 0; ++v)
+    if ((B.vertices()[v].point - p).norm() <= 1e-8 * Size)
+      vertex = v;
+  if (vertex < 0)
+    fail("3D MAT: two touchpoints of ", describe(ball), " merge at ", format(B.userPoint(p)),
+      ", not at a vertex: skeletal edges of curved faces are not supported yet");
+  const int existing = findNode(ball.x);
+  const int node = addNode(ball, -1);
+  Result.nodes[node].seamEnd = true;
+  if (existing >= 0)
+    return node; // its rim is there already
+  // The vertex's node (radius 0, every face there).
+  MedialBall3D corner;
+  for (int e : B.vertices()[vertex].edges)
+    for (int f : { B.edges()[e].faceA, B.edges()[e].faceB })
+      if (std::find(corner.generators.begin(), corner.generators.end(), f) == corner.generators.end())
+      {
+        corner.generators.push_back(f);
+        corner.q.push_back(Generators[f].parameterOf(B.vertices()[vertex].point));
+      }
+  corner.x = B.vertices()[vertex].point;
+  const int end = addNode(corner, vertex);
+  MAT3DSkeletalEdge rim;
+  rim.startNode = node;
+  rim.endNode = end;
+  rim.vertex = vertex;
+  rim.generators = { ball.generators[a], ball.generators[b] };
+  const Vec3 normal = (ball.x - p) / ball.r;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(ball.r / (Options.maxStep * Size))));
+  for (int k = 0; k <= pieces; ++k)
+  {
+    MedialBall3D m;
+    m.r = ball.r * (1.0 - static_cast<double>(k) / pieces);
+    m.x = k == pieces ? corner.x : Vec3(p + m.r * normal);
+    if (k > 0 && k < pieces)
+      for (int f : facesOutside(m, m.r))
+        if (faceDistance(f, m.x) < m.r - 1e-9 * Size)
+          fail("3D MAT: the rim from ", describe(ball), " to the vertex at ", format(B.userPoint(p)), " enters ",
+            Generators[f].name(), ": not medial");
+    rim.balls.push_back(m);
+  }
+  Result.skeletalEdges.push_back(std::move(rim));
+  return node;
+}
+
 // Touch i of the ball has left its entity through `side` (Generator3D::exitSide): it goes
 // on to the entity beyond — the neighbour face across a smooth edge, the reflex edge at a
 // face's side, the face at either end of a reflex edge's normal arc, the corner (or the
@@ -227,6 +297,12 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
     {
       const int vertex = side == 2 ? edge.startVertex : edge.endVertex;
       next = beyondVertex(from.entity(), vertex);
+      // Reaching the vertex with the normal at an end of the arc (a corner where convex
+      // edges meet the reflex one: the ball lies under one face): continue on that face,
+      // at its corner.
+      const double theta = ball.q[i].y(), alpha = from.edgeAngle(ball.q[i].x());
+      if (next < 0 && std::min(std::abs(theta), std::abs(theta - alpha)) <= 1e-7)
+        next = std::abs(theta) <= 1e-7 ? edge.faceA : edge.faceB;
       if (next < 0)
         fail("3D MAT: the seam through ", describe(ball), " reached the end of ", from.name(), " at ",
           format(B.userPoint(B.vertices()[vertex].point)),
@@ -607,6 +683,14 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       if (stalled > 8)
         fail("3D MAT: the seam through ", describe(at), " keeps crossing edges without moving (",
           Generators[face].name(), " and its neighbours)");
+      // Two touchpoints merged at a vertex (a reflex edge's touch reached its end where
+      // another reflex edge ends): the seam ends on the rim of their sheet.
+      if (int a = -1, b = -1; merging(at, a, b))
+      {
+        seam.balls.push_back(at);
+        endNode = seamEndAtVertex(at, a, b);
+        break;
+      }
       seam.balls.push_back(at);
       ball = at;
       previous = t;
@@ -795,6 +879,11 @@ MAT3D Tracer::run()
     ++seamsAt[seam.startNode];
     ++seamsAt[seam.endNode];
   }
+  for (const MAT3DSkeletalEdge& rim : Result.skeletalEdges)
+  {
+    ++seamsAt[rim.startNode];
+    ++seamsAt[rim.endNode];
+  }
   std::vector<MAT3DNode> kept;
   for (size_t n = 0; n < Result.nodes.size(); ++n)
     if (seamsAt[n] > 0 || Result.nodes[n].vertex < 0)
@@ -807,6 +896,11 @@ MAT3D Tracer::run()
   {
     seam.startNode = renumber[seam.startNode];
     seam.endNode = renumber[seam.endNode];
+  }
+  for (MAT3DSkeletalEdge& rim : Result.skeletalEdges)
+  {
+    rim.startNode = renumber[rim.startNode];
+    rim.endNode = renumber[rim.endNode];
   }
   // A junction's touchpoints: its generators' touches, those at one point counted once
   // (coplanar faces meeting at a smooth edge under the ball, a face at a reflex edge).
@@ -833,7 +927,8 @@ MAT3D Tracer::run()
 
 int MAT3D::junctionCount() const
 {
-  return static_cast<int>(std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0; }));
+  return static_cast<int>(
+    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd; }));
 }
 
 MedialComplex MAT3D::complex() const
@@ -844,10 +939,10 @@ MedialComplex MAT3D::complex() const
     MedialPoint3D p;
     p.x = n.ball.x;
     p.radius = n.ball.r;
-    p.type = n.vertex >= 0 ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
+    p.type = n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
     p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
     c.points.push_back(p);
-    if (n.vertex < 0)
+    if (n.vertex < 0 && !n.seamEnd)
     {
       MedialElement e;
       e.type = MedialElementType::Junction;
@@ -873,6 +968,25 @@ MedialComplex MAT3D::complex() const
       e.points.push_back(static_cast<int>(c.points.size()) - 1);
     }
     e.points.push_back(s.endNode);
+    c.elements.push_back(e);
+  }
+  for (const MAT3DSkeletalEdge& rim : skeletalEdges)
+  {
+    MedialElement e;
+    e.type = MedialElementType::SkeletalEdge;
+    e.governors = { rim.generators[0], rim.generators[1] };
+    e.points.push_back(rim.startNode);
+    for (size_t i = 1; i + 1 < rim.balls.size(); ++i)
+    {
+      MedialPoint3D p;
+      p.x = rim.balls[i].x;
+      p.radius = rim.balls[i].r;
+      p.type = MedialPoint3DType::SkeletalEdge;
+      p.contacts = 1;
+      c.points.push_back(p);
+      e.points.push_back(static_cast<int>(c.points.size()) - 1);
+    }
+    e.points.push_back(rim.endNode);
     c.elements.push_back(e);
   }
   return c;

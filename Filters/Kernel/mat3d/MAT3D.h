@@ -50,7 +50,10 @@ struct MAT3DOptions
 struct MAT3DNode
 {
   MedialBall3D ball;     ///< every face touching (r = 0 at a convex vertex)
-  int vertex = -1;       ///< the vertex, or −1 for a junction
+  int vertex = -1;       ///< the vertex, or −1 for a junction or seam end
+  /// A seam's end where two of its touchpoints merge at a vertex of the solid: the seam
+  /// meets the skeletal edge (rim) of the sheet between those two generators there.
+  bool seamEnd = false;
   int touchpoints = 0;   ///< distinct points the ball touches (a point touched by two faces once)
   Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
 };
@@ -63,6 +66,18 @@ struct MAT3DSeam
   /// axis, where more generators than the triplet keep touching).
   int touchpoints = 3;
   std::vector<MedialBall3D> balls; ///< from start node to end node, both included
+};
+
+/// A skeletal edge (rim) at a vertex: where the sheet between two reflex edges ending at a
+/// vertex (a staircase's inner corner) closes, its balls touch the solid at the vertex
+/// only, their centres on a straight segment along the normal there, from a seam end
+/// (startNode) to the vertex (endNode, radius 0).
+struct MAT3DSkeletalEdge
+{
+  int startNode = -1, endNode = -1;
+  int vertex = -1;
+  std::array<int, 2> generators{ { -1, -1 } }; ///< the pair whose touchpoints merged
+  std::vector<MedialBall3D> balls;             ///< centre and radius only, start to end
 };
 
 /// A medial sheet's topology (for vtkSheetInterpolator): its generator pair and the
@@ -90,11 +105,13 @@ struct MAT3D
   std::vector<MAT3DGenerator> generators;
   std::vector<MAT3DNode> nodes;
   std::vector<MAT3DSeam> seams;
+  std::vector<MAT3DSkeletalEdge> skeletalEdges;
   std::vector<MAT3DSheet> sheets;
 
   int junctionCount() const;
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
-  /// (sharing the node points), governors = the seam's start triplet of generators.
+  /// (sharing the node points), governors = the seam's start triplet of generators; a
+  /// SkeletalEdge polyline per skeletal edge (governors: the merged pair).
   MedialComplex complex() const;
 };
 

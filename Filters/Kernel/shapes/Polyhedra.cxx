@@ -3,6 +3,8 @@
 #include "common/InputError.h"
 
 #include <cmath>
+#include <array>
+#include <map>
 
 namespace exactmat
 {
@@ -100,6 +102,63 @@ std::vector<PatchPiece> lPrism(double b, double h)
   for (int i = 0; i < 6; ++i)
     faces.push_back({ i, (i + 1) % 6, 6 + (i + 1) % 6, 6 + i });
   return polyhedron(v, faces);
+}
+
+std::vector<PatchPiece> voxelSolid(const std::function<bool(int, int, int)>& filled, int nx, int ny, int nz, double cell)
+{
+  auto inside = [&](int i, int j, int k) {
+    return i >= 0 && i < nx && j >= 0 && j < ny && k >= 0 && k < nz && filled(i, j, k);
+  };
+  Vec3List v;
+  std::map<std::array<int, 3>, int> index;
+  auto at = [&](const std::array<int, 3>& p) {
+    const auto it = index.find(p);
+    if (it != index.end())
+      return it->second;
+    v.push_back(cell * Vec3(p[0], p[1], p[2]));
+    index[p] = static_cast<int>(v.size()) - 1;
+    return static_cast<int>(v.size()) - 1;
+  };
+  std::vector<std::vector<int>> faces;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k)
+      {
+        if (!inside(i, j, k))
+          continue;
+        const std::array<int, 3> c{ { i, j, k } };
+        for (int a = 0; a < 3; ++a)
+          for (int side : { 0, 1 })
+          {
+            std::array<int, 3> next = c;
+            next[a] += side ? 1 : -1;
+            if (inside(next[0], next[1], next[2]))
+              continue;
+            const int b = (a + 1) % 3, d = (a + 2) % 3;
+            auto corner = [&](int u, int w) {
+              std::array<int, 3> p = c;
+              p[a] += side;
+              p[b] += u;
+              p[d] += w;
+              return at(p);
+            };
+            faces.push_back({ corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1) });
+          }
+      }
+  return polyhedron(v, faces);
+}
+
+std::vector<PatchPiece> randomStaircase(std::mt19937& rng, int n, int maxHeight)
+{
+  std::uniform_int_distribution<int> drop(0, 1);
+  std::vector<std::vector<int>> height(n, std::vector<int>(n, maxHeight));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const int limit = std::min(i > 0 ? height[i - 1][j] : maxHeight, j > 0 ? height[i][j - 1] : maxHeight);
+      height[i][j] = std::max(1, limit - drop(rng));
+    }
+  return voxelSolid([&height](int i, int j, int k) { return k < height[i][j]; }, n, n, maxHeight);
 }
 
 std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n)

@@ -5,6 +5,7 @@
 
 #include "brep/Boundary3D.h"
 
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -34,6 +35,16 @@ std::vector<PatchPiece> notchedCube(double b, double a);
 /// The prism over the L [0, 2b]² minus [b, 2b]² (legs b thick) from z = 0 to z = h: one
 /// reflex edge (x = y = b), each cap as two convex quadrilaterals.
 std::vector<PatchPiece> lPrism(double b, double h);
+
+/// The union of the filled cells of an nx × ny × nz grid of unit cubes scaled by `cell`: one
+/// square per exposed cell side (coplanar squares meet at smooth edges). The caller keeps
+/// the union a manifold solid (no two cells meeting only along an edge or at a corner).
+std::vector<PatchPiece> voxelSolid(const std::function<bool(int, int, int)>& filled, int nx, int ny, int nz, double cell = 1.0);
+
+/// A random staircase: an n × n grid of columns whose heights (1 … maxHeight cells) never
+/// increase along x or y — reflex edges, reflex corners and corners where convex and reflex
+/// edges meet, always a manifold solid.
+std::vector<PatchPiece> randomStaircase(std::mt19937& rng, int n, int maxHeight);
 
 /// A truncated pyramid: a convex n-gon (vertices on a random ellipse at random angles) in
 /// z = 0 and its image under a random homothety (ratio 0.3 … 0.9) moved up by 0.5 … 2: planar
