@@ -429,6 +429,12 @@ double Generator3D::distance(const Vec3& x) const
   return (nearestPoint(x) - x).norm();
 }
 
+bool Generator3D::coplanar(const Generator3D& other, double tolerance) const
+{
+  return Kind == GeneratorKind3D::Face && other.Kind == GeneratorKind3D::Face && Planar && other.Planar &&
+    Inward.dot(other.Inward) > 1.0 - 1e-12 && std::abs((other.Origin - Origin).dot(Inward)) <= tolerance;
+}
+
 std::string Generator3D::name() const
 {
   if (Kind == GeneratorKind3D::Face)

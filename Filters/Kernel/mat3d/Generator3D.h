@@ -87,6 +87,10 @@ public:
   /// The entity's point nearest x.
   Vec3 nearestPoint(const Vec3& x) const;
 
+  /// Two planar faces in one plane (same inward normal, offsets within `tolerance`): a
+  /// ball touches their union at one point at most.
+  bool coplanar(const Generator3D& other, double tolerance) const;
+
   /// Reflex corners: the edges (Boundary3D indices) bounding the normal cone.
   const std::vector<int>& cornerEdges() const { return CornerEdges; }
   /// Reflex corners: whether the normal cone has an interior (at least three reflex edges,

@@ -91,6 +91,8 @@ private:
   int beyondVertex(int edge, int vertex) const;
   void crossOver(MedialBall3D& ball, int i, int side) const;
   bool merging(const MedialBall3D& ball, int& a, int& b) const;
+  bool sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b) const;
+  int contactCount(const MedialBall3D& ball) const;
   int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
   // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
@@ -104,6 +106,7 @@ private:
   void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
+  void polishJunction(MedialBall3D& j) const;
   std::string describe(const MedialBall3D& ball) const;
   void reportProgress();
   void collectSheets();
@@ -196,6 +199,57 @@ int Tracer::beyondVertex(int edge, int vertex) const
       return EdgeGenerator[e];
   }
   return -1;
+}
+
+// Whether the ball touches the boundary at a and b in one contact: they coincide, or the
+// boundary between them stays on the sphere (the valley between them does not leave the
+// ball: a coplanar neighbour's foot a hair from a touchpoint), as the verification decides.
+bool Tracer::sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b) const
+{
+  const double gap = (a - b).norm();
+  if (gap <= 1e-7 * ball.r)
+    return true;
+  if (gap > 0.2 * ball.r)
+    return false;
+  const Vec3 m = 0.5 * (a + b);
+  Vec3 foot = a;
+  double best = Unbounded;
+  for (int f : Tree.candidatesWithin(m, 0.5 * gap))
+  {
+    const Vec3 p = Generators[f].nearestPoint(m);
+    if ((p - m).norm() < best)
+    {
+      best = (p - m).norm();
+      foot = p;
+    }
+  }
+  return (foot - ball.x).norm() <= ball.r + Degenerate;
+}
+
+// The distinct points where the ball touches the boundary: its generators' touches and the
+// feet of every face at distance r (to Degenerate).
+int Tracer::contactCount(const MedialBall3D& ball) const
+{
+  Vec3List points;
+  for (int i = 0; i < ball.size(); ++i)
+    points.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
+  for (int f : Tree.candidatesWithin(ball.x, ball.r + Degenerate))
+  {
+    const Vec3 foot = Generators[f].nearestPoint(ball.x);
+    if ((foot - ball.x).norm() > ball.r + Degenerate)
+      continue;
+    bool seen = false;
+    for (const Vec3& p : points)
+      seen = seen || sameContact(ball, p, foot);
+    if (!seen)
+    {
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "   contact of face %d at (%.9g %.9g %.9g), d-r %.3g\n", f, foot.x(), foot.y(), foot.z(), (foot - ball.x).norm() - ball.r);
+#endif
+      points.push_back(foot);
+    }
+  }
+  return static_cast<int>(points.size());
 }
 
 // Two of the ball's touchpoints at one point (a and b: their indices in the ball).
@@ -403,6 +457,9 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
   ball.r = nb.r;
   double separation = 1.0;
   const Eigen::VectorXd t0 = System.tangent(ball, &separation);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+  std::fprintf(stderr, "outgoing? node r %.3g triplet %d %d %d separation %.3g\n", nb.r, t[0], t[1], t[2], separation);
+#endif
   if (separation > 1e-6)
     return false; // no single seam of this triplet through the node
   const double trial = std::min(1e-4, 0.01 * Options.maxStep) * Size;
@@ -422,14 +479,41 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
       const Touch3D touch = Generators[g].evaluate(nb.q[i]);
       worst = std::min(worst, touch.normal.dot(dx) - dr);
     }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "   sign %d worst %.3g\n", sign, worst);
+#endif
     if (worst < -1e-7)
       continue;
-    MedialBall3D next;
-    if (!step(ball, d, trial, next) || next.r < 0.0)
-      continue;
-    bool inside = true;
-    for (int i = 0; i < 3 && inside; ++i)
-      inside = Generators[next.generators[i]].exitSide(next.q[i], Solve) < 0;
+    // The trial step. A touch at the node on a smooth edge between two faces (coplanar
+    // pieces) may leave into the neighbour: the seam starts on that one.
+    MedialBall3D start = ball, next;
+    Eigen::VectorXd direction = d;
+    bool inside = false;
+    for (int attempt = 0; attempt < 4 && !inside; ++attempt)
+    {
+      if (!step(start, direction, trial, next) || next.r < 0.0)
+        break;
+      int leaving = -1, side = -1;
+      for (int i = 0; i < 3 && leaving < 0; ++i)
+        if ((side = Generators[next.generators[i]].exitSide(next.q[i], Solve)) >= 0)
+          leaving = i;
+      inside = leaving < 0;
+      if (inside || Generators[start.generators[leaving]].kind() != GeneratorKind3D::Face)
+        break;
+      const auto e = SideEdge.find({ start.generators[leaving], side });
+      if (e == SideEdge.end() || B.edges()[e->second].kind != VertexKind::Smooth)
+        break;
+      const Edge3D& edge = B.edges()[e->second];
+      const int neighbour = edge.faceA == start.generators[leaving] ? edge.faceB : edge.faceA;
+      const Vec3 p = Generators[start.generators[leaving]].evaluate(start.q[leaving]).point;
+      start.generators[leaving] = neighbour;
+      start.q[leaving] = Generators[neighbour].parameterOf(p);
+      const Eigen::VectorXd n = System.tangent(start);
+      direction = n.segment<4>(6).dot(d.segment<4>(6)) < 0.0 ? Eigen::VectorXd(-n) : n;
+    }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "   inside %d\n", (int)inside);
+#endif
     if (!inside)
       continue;
     // Three distinct touchpoints: two coplanar faces touching at their common (smooth)
@@ -441,37 +525,20 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
     if ((touch[0] - touch[1]).norm() <= same || (touch[0] - touch[2]).norm() <= same ||
       (touch[1] - touch[2]).norm() <= same)
       continue;
-    // The node's other generators stay outside the ball. Some may keep touching it: where
-    // the triplet does (coplanar faces), or elsewhere along a degenerate seam (the axis of
-    // an extruded star, touching five reflex edges): those count as touchpoints of the seam.
+    // The node's other generators stay outside the ball.
     bool clear = true;
-    Vec3List points(touch, touch + 3);
     for (int g : nb.generators)
-    {
-      if (std::find(t.begin(), t.end(), g) != t.end())
-        continue;
-      const double d = faceDistance(g, next.x);
-      clear = clear && d >= next.r - Degenerate;
-      if (d > next.r + Degenerate)
-        continue;
-      const Vec3 foot = Generators[g].nearestPoint(next.x);
-      // (A foot a small fraction of the radius from a touchpoint is the same contact: a
-      // coplanar neighbour whose common edge runs almost along the seam's touchpoint.)
-      bool seen = false;
-      for (const Vec3& p : points)
-        seen = seen || (p - foot).norm() <= 0.05 * next.r;
-      if (!seen)
-      {
-#ifdef EXACTMAT_TRACE3D_DEBUG
-        std::fprintf(stderr, "co-touch: gen %d d-r %.3g at node r %.3g next r %.3g\n", g, d - next.r, nb.r, next.r);
-#endif
-        points.push_back(foot);
-      }
-    }
+      if (std::find(t.begin(), t.end(), g) == t.end())
+        clear = clear && faceDistance(g, next.x) >= next.r - Degenerate;
     if (!clear)
       continue;
-    touchpoints = static_cast<int>(points.size());
-    tangent = d;
+    // Generators that keep touching along the seam — where the triplet does (coplanar
+    // faces), or elsewhere along a degenerate seam (the axis of an extruded star, touching
+    // five reflex edges) — count as its touchpoints: the distinct feet of every face that
+    // touches the trial ball.
+    touchpoints = contactCount(next);
+    ball = start;
+    tangent = direction;
     return true;
   }
   return false;
@@ -484,11 +551,12 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
 {
   MedialBall3D end;
   step(before, t, h, end);
-  // Faces already touching `before` (empty) keep touching along a degenerate seam (the
-  // extruded star's axis, five reflex edges): they bracket nothing.
+  // Faces touching both `before` (empty) and `end` keep touching along a degenerate seam
+  // (the extruded star's axis, five reflex edges): they bracket nothing. (A face touching
+  // `before` and inside `end` is a junction right at `before`.)
   std::vector<int> others;
   for (int f : facesOutside(end, end.r + Margin))
-    if (faceDistance(f, before.x) > before.r + Degenerate)
+    if (faceDistance(f, before.x) > before.r + Degenerate || faceDistance(f, end.x) < end.r - 1e-9 * Size)
       others.push_back(f);
   // A face touching where a generator does (a coplanar neighbour across a smooth edge the
   // touchpoint runs along) is no fourth touchpoint.
@@ -499,6 +567,12 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
     double d = Unbounded;
     for (int f : others)
     {
+      // A face in a generator's plane touches where the generator does, if at all.
+      bool inPlane = false;
+      for (int g : b.generators)
+        inPlane = inPlane || Generators[g].coplanar(Generators[f], Degenerate);
+      if (inPlane)
+        continue;
       const Vec3 foot = Generators[f].nearestPoint(b.x);
       bool distinct = true;
       for (const Vec3& p : touches)
@@ -524,9 +598,23 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
     else
       hi = mid;
   }
-  // Every face within reach joins the junction; Newton on the k-face system, repeated
-  // while another face turns out to touch the polished ball.
   MedialBall3D j = at;
+  polishJunction(j);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+  std::fprintf(stderr, "junction from %s: %s (bisected at lo %.3g of h %.3g)\n", describe(before).c_str(), describe(j).c_str(), lo, h);
+  for (int i = 0; i < j.size(); ++i)
+    std::fprintf(stderr, "   gen %d: d-r %.3g\n", j.generators[i], faceDistance(j.generators[i], j.x) - j.r);
+#endif
+  if (j.size() < 4)
+    fail("3D MAT: the seam through ", describe(before), " met a face that does not touch where it was located");
+  return j;
+}
+
+// Every face within reach of j joins it (or the reflex edge or corner where it is touched);
+// Newton on the k-generator system, repeated while another face turns out to touch the
+// polished ball.
+void Tracer::polishJunction(MedialBall3D& j) const
+{
   for (int round = 0; round < 6; ++round)
   {
     bool added = false;
@@ -543,12 +631,32 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
       // comes near its border: a coplanar neighbour's edge a hair from a touchpoint.
       const Vec3 normal = Generators[f].evaluate(Generators[f].parameterOf(foot)).normal;
       const bool tangent = (j.x - foot).cross(normal).norm() <= 1e-8 * footDistance;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "   candidate face %d foot (%.9g %.9g %.9g) d-r %.3g distinct %d tangent %d\n", f, foot.x(), foot.y(), foot.z(), footDistance - j.r, (int)distinct, (int)tangent);
+#endif
       if (!distinct || footDistance > j.r + 1e-10 * Size)
         continue;
       // Touching at a reflex edge or corner of the face: that entity joins instead.
       const int g = tangent ? f : reflexEntityAt(f, foot);
-      if (g >= 0 && std::find(j.generators.begin(), j.generators.end(), g) == j.generators.end())
+      // (A reflex entity touches only with its normal in its arc or cone: else the touch
+      // there belongs to a neighbour.)
+      if (g >= 0 && std::find(j.generators.begin(), j.generators.end(), g) == j.generators.end() &&
+        (tangent || Generators[g].exitSide(Generators[g].touchParameter(foot, j.x), 1e-9 * Size) < 0))
       {
+        // A corner touching replaces the reflex edges ending there that joined before
+        // (their touches were a hair short of it, or past it).
+        if (Generators[g].kind() == GeneratorKind3D::ReflexCorner)
+          for (int i = j.size() - 1; i >= 0; --i)
+          {
+            const Generator3D& other = Generators[j.generators[i]];
+            if (other.kind() == GeneratorKind3D::ReflexEdge &&
+              (B.edges()[other.entity()].startVertex == Generators[g].entity() ||
+                B.edges()[other.entity()].endVertex == Generators[g].entity()))
+            {
+              j.generators.erase(j.generators.begin() + i);
+              j.q.erase(j.q.begin() + i);
+            }
+          }
         j.generators.push_back(g);
         j.q.push_back(Generators[g].touchParameter(foot, j.x));
         added = true;
@@ -557,18 +665,19 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
     if (!added)
       break;
     MedialBall3D polished = j;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    for (int i = 0; i < j.size(); ++i)
+    {
+      const Vec3 p = Generators[j.generators[i]].evaluate(j.q[i]).point;
+      std::fprintf(stderr, "  polish round %d gen %d kind %d entity %d q (%.6g %.6g) point (%.6g %.6g %.6g) exit %d\n", round, j.generators[i],
+        (int)Generators[j.generators[i]].kind(), Generators[j.generators[i]].entity(), j.q[i].x(), j.q[i].y(), p.x(), p.y(), p.z(),
+        Generators[j.generators[i]].exitSide(j.q[i], Solve));
+    }
+#endif
     if (!System.correct(polished, polished.size() > 4 ? Degenerate : Solve))
       fail("3D MAT: the junction near ", describe(j), " could not be polished");
     j = polished;
   }
-#ifdef EXACTMAT_TRACE3D_DEBUG
-  std::fprintf(stderr, "junction from %s: %s (bisected at lo %.3g of h %.3g)\n", describe(before).c_str(), describe(j).c_str(), lo, h);
-  for (int i = 0; i < j.size(); ++i)
-    std::fprintf(stderr, "   gen %d: d-r %.3g\n", j.generators[i], faceDistance(j.generators[i], j.x) - j.r);
-#endif
-  if (j.size() < 4)
-    fail("3D MAT: the seam through ", describe(before), " met a face that does not touch where it was located");
-  return j;
 }
 
 void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints)
@@ -663,10 +772,14 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         }
       }
       // A fourth face may touch before the touchpoint reaches the edge (always so at a
-      // convex edge): then the seam ends at that junction.
-      if (!empty(at))
+      // convex edge), or just as it does (a grid of squares: the face beyond an edge
+      // touches the ball from there on): then the seam ends at that junction.
+      MedialBall3D touching = at;
+      if (empty(at) && contactCount(at) != seam.touchpoints)
+        polishJunction(touching);
+      if (!empty(at) || touching.size() > 3)
       {
-        const MedialBall3D j = junction(ball, t, lo);
+        const MedialBall3D j = touching.size() > 3 ? touching : junction(ball, t, lo);
         endNode = addNode(j, -1);
         seam.balls.push_back(j);
         break;
@@ -705,6 +818,31 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       const MedialBall3D j = junction(ball, t, h);
       endNode = addNode(j, -1);
       seam.balls.push_back(j);
+      break;
+    }
+    // A degenerate seam (more touchpoints than its triplet: a square tube's axis) ends
+    // where one of its extra contacts leaves: located by bisection on the contact count.
+    if (seam.touchpoints > 3 && contactCount(next) != seam.touchpoints)
+    {
+      double lo = 0.0, hi = h;
+      MedialBall3D last = ball;
+      for (int k = 0; k < 60 && hi - lo > 1e-14 * Size; ++k)
+      {
+        const double mid = 0.5 * (lo + hi);
+        MedialBall3D m;
+        if (step(ball, t, mid, m) && contactCount(m) == seam.touchpoints)
+        {
+          lo = mid;
+          last = m;
+        }
+        else
+          hi = mid;
+      }
+      polishJunction(last);
+      if (last.size() < 4)
+        fail("3D MAT: the degenerate seam through ", describe(ball), " loses a touchpoint where no junction is found");
+      endNode = addNode(last, -1);
+      seam.balls.push_back(last);
       break;
     }
 #ifdef EXACTMAT_TRACE3D_DEBUG
@@ -807,6 +945,9 @@ void Tracer::startFrom(int node)
         int touchpoints = 3;
         if (!outgoing(Result.nodes[node], t, ball, tangent, touchpoints))
           continue;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+        std::fprintf(stderr, "node %d: triplet %d %d %d leaves with %d touchpoints\n", node, t[0], t[1], t[2], touchpoints);
+#endif
         Traced.insert({ node, t });
         // Two triplets with one seam: coplanar faces (a planar face split into triangles)
         // both touch the ball leaving along their common edge. One seam per direction.

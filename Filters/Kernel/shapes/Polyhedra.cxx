@@ -158,6 +158,10 @@ std::vector<PatchPiece> randomStaircase(std::mt19937& rng, int n, int maxHeight)
       const int limit = std::min(i > 0 ? height[i - 1][j] : maxHeight, j > 0 ? height[i][j - 1] : maxHeight);
       height[i][j] = std::max(1, limit - drop(rng));
     }
+  // At least one step: the first column full height, the last one cell.
+  height[0][0] = maxHeight;
+  if (n > 1)
+    height[n - 1][n - 1] = 1;
   return voxelSolid([&height](int i, int j, int k) { return k < height[i][j]; }, n, n, maxHeight);
 }
 

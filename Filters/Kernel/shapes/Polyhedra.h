@@ -42,8 +42,8 @@ std::vector<PatchPiece> lPrism(double b, double h);
 std::vector<PatchPiece> voxelSolid(const std::function<bool(int, int, int)>& filled, int nx, int ny, int nz, double cell = 1.0);
 
 /// A random staircase: an n × n grid of columns whose heights (1 … maxHeight cells) never
-/// increase along x or y — reflex edges, reflex corners and corners where convex and reflex
-/// edges meet, always a manifold solid.
+/// increase along x or y, the first maxHeight, the last 1 — reflex edges, reflex corners and
+/// corners where convex and reflex edges meet, always a manifold solid.
 std::vector<PatchPiece> randomStaircase(std::mt19937& rng, int n, int maxHeight);
 
 /// A truncated pyramid: a convex n-gon (vertices on a random ellipse at random angles) in
