@@ -132,7 +132,7 @@ std::string Tracer::describe(const MedialBall3D& ball) const
 {
   // "the ball at (x, y, z) of radius r touching face 0, face 2 and face 4"
   std::ostringstream s;
-  s << "the ball at " << format(ball.x) << " of radius " << ball.r << " touching ";
+  s << "the ball at " << format(B.userPoint(ball.x)) << " of radius " << B.userFrame().lengthToUser(ball.r) << " touching ";
   for (int i = 0; i < ball.size(); ++i)
     s << (i == 0 ? "" : i + 1 == ball.size() ? " and " : ", ") << Generators[ball.generators[i]].name();
   return s.str();
@@ -355,8 +355,11 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
       // edges meet the reflex one: the ball lies under one face): continue on that face,
       // at its corner.
       const double theta = ball.q[i].y(), alpha = from.edgeAngle(ball.q[i].x());
-      if (next < 0 && std::min(std::abs(theta), std::abs(theta - alpha)) <= 1e-7)
-        next = std::abs(theta) <= 1e-7 ? edge.faceA : edge.faceB;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "edge end: theta %.9g alpha %.9g t %.9g\n", theta, alpha, ball.q[i].x());
+#endif
+      if (next < 0 && std::min(std::abs(theta), std::abs(theta - alpha)) <= 1e-5)
+        next = std::abs(theta) <= std::abs(theta - alpha) ? edge.faceA : edge.faceB;
       if (next < 0)
         fail("3D MAT: the seam through ", describe(ball), " reached the end of ", from.name(), " at ",
           format(B.userPoint(B.vertices()[vertex].point)),
@@ -692,6 +695,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   Eigen::VectorXd previous = tangent;
   int endNode = -1;
   int stalled = 0; // crossings in a row that made no progress along the seam
+  Vec3 lastCrossing = Vec3::Constant(Unbounded);
   for (int n = 0; n < Options.maxStepsPerSeam && endNode < 0; ++n)
   {
     if (n + 1 == Options.maxStepsPerSeam)
@@ -715,6 +719,12 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       h *= std::max(0.2, 0.8 * std::sqrt(tol / error));
       continue;
     }
+    // At a degenerate node the triplet's solutions may branch: a first step that Newton
+    // pulls off the computed direction has joined another seam (traced from its own
+    // triplet), not this one.
+    if (seam.balls.size() == 1 &&
+      (next.x - ball.x).normalized().dot(t.segment<3>(6).normalized()) < 0.9)
+      return;
     // The radius vanishes: the seam ends at a convex vertex.
     if (next.r < 0.0)
     {
@@ -723,7 +733,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         fail("3D MAT: the seam through ", describe(ball), " could not be ended at radius 0");
       const int node = findNode(v.x);
       if (node < 0 || Result.nodes[node].vertex < 0)
-        fail("3D MAT: the seam through ", describe(ball), " reaches radius 0 at ", format(v.x),
+        fail("3D MAT: the seam through ", describe(ball), " reaches radius 0 at ", format(B.userPoint(v.x)),
           ", which is not a convex vertex");
       seam.balls.push_back(v);
       endNode = node;
@@ -792,7 +802,10 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
 #ifdef EXACTMAT_TRACE3D_DEBUG
       std::fprintf(stderr, "  crossed from %d to %s\n", face, describe(at).c_str());
 #endif
-      stalled = lo > 0.0 ? 0 : stalled + 1;
+      // (No progress: the step to the crossing was nil, or the crossings go back and forth
+      // around one point.)
+      stalled = lo > 1e-9 * Size && (at.x - lastCrossing).norm() > 1e-6 * Size ? 0 : stalled + 1;
+      lastCrossing = at.x;
       if (stalled > 8)
         fail("3D MAT: the seam through ", describe(at), " keeps crossing edges without moving (",
           Generators[face].name(), " and its neighbours)");
@@ -955,6 +968,10 @@ void Tracer::startFrom(int node)
         bool taken = false;
         for (const Vec3& other : Result.nodes[node].directions)
           taken = taken || (other - d).norm() < 1e-6;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+        for (const Vec3& other : Result.nodes[node].directions)
+          std::fprintf(stderr, "   direction (%.9f %.9f %.9f) vs known (%.9f %.9f %.9f)\n", d.x(), d.y(), d.z(), other.x(), other.y(), other.z());
+#endif
         if (taken)
           continue;
         Result.nodes[node].directions.push_back(d);
