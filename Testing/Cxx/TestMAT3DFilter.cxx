@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 using namespace exactmat;
@@ -139,6 +141,58 @@ TEST(vtkMAT3DFilter, PillowMovedFarAwayIsTheSame)
           EXPECT_NEAR(r, reference, 1e-9 * reference);
       }
   }
+}
+
+// The notched cube (edge 4, centred, the (+, +, +) eighth cut away): three reflex edges and
+// a reflex corner at the origin. Governors name a reflex edge by its two faces' ids and the
+// corner by its three, joined by "/"; the diagonal seam meets the corner at the junction
+// k (1, 1, 1) − (2, 2, 2), radius k = 2√3 / (1 + √3).
+TEST(vtkMAT3DFilter, NotchedCubeNamesItsReflexGenerators)
+{
+  vtkNew<vtkNURBSSource> cube;
+  cube->SetShapeName("notched-cube");
+  vtkNew<vtkMAT3DFilter> mat;
+  mat->SetInputConnection(cube->GetOutputPort());
+  auto errors = ErrorRecorder::watch(mat);
+  mat->Update();
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  vtkPolyData* out = mat->GetOutput();
+  EXPECT_EQ(mat->GetNumberOfJunctions(), 7);
+  EXPECT_TRUE(mat->GetVerificationPassed());
+  EXPECT_EQ(mat->GetNumberOfTouchpointMismatches(), 0);
+  EXPECT_LE(worstRadiusError(cube->GetOutput(), out, 1), 1e-9);
+  auto* governors = vtkStringArray::SafeDownCast(out->GetCellData()->GetAbstractArray(arrays::Governors));
+  ASSERT_TRUE(governors);
+  int edgeTokens = 0, cornerTokens = 0;
+  for (vtkIdType c = 0; c < governors->GetNumberOfTuples(); ++c)
+  {
+    std::stringstream list(governors->GetValue(c));
+    std::string token;
+    while (std::getline(list, token, ','))
+    {
+      const auto slashes = std::count(token.begin(), token.end(), '/');
+      edgeTokens += slashes == 1;
+      cornerTokens += slashes == 2;
+    }
+  }
+  EXPECT_GT(edgeTokens, 0);
+  EXPECT_GT(cornerTokens, 0);
+  const double k = 2.0 * std::sqrt(3.0) / (1.0 + std::sqrt(3.0));
+  vtkDataArray* radius = out->GetPointData()->GetArray(arrays::Radius);
+  vtkDataArray* type = out->GetPointData()->GetArray(arrays::PointType);
+  int diagonal = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    if (type->GetTuple1(i) == 2 && std::abs(radius->GetTuple1(i) - k) < 1e-9)
+    {
+      ++diagonal;
+      for (double c : x)
+        EXPECT_NEAR(c, k - 2.0, 1e-9);
+    }
+  }
+  EXPECT_EQ(diagonal, 1);
 }
 
 TEST(vtkMAT3DFilter, UnsupportedAndWrongInputSayWhy)
