@@ -315,6 +315,15 @@ class PythonPackage(unittest.TestCase):
         self.assertEqual(touch[kind == 2].tolist(), [6])
         self.assertTrue(mat.GetVerificationPassed())
         self.assertLessEqual(mat.GetMaximumVerifiedError(), 1e-9)
+        # The notched cube: reflex edges and a reflex corner (governors joined by "/").
+        source.SetShapeName("notched-cube")
+        mat.Update()
+        out = mat.GetOutput()
+        self.assertEqual(mat.GetNumberOfJunctions(), 7)
+        self.assertTrue(mat.GetVerificationPassed())
+        governors = out.GetCellData().GetAbstractArray("Governors")
+        tokens = [t for i in range(governors.GetNumberOfTuples()) for t in governors.GetValue(i).split(",")]
+        self.assertTrue(any(t.count("/") == 2 for t in tokens))  # the reflex corner
         # A cylinder has no seam: refused, and the reason reaches Python.
         source.SetShapeName("cylinder")
         errors = exactmat.ErrorObserver().watch(mat)

@@ -296,7 +296,7 @@ const std::vector<std::string>& catalogueNames()
 {
   static const std::vector<std::string> names{ "rectangle", "rounded-rectangle", "circle",
     "ellipse", "annulus", "l-shape", "star", "blob", "spiral", "plate-with-holes",
-    "narrow-passage", "box", "notched-cube", "cylinder", "pillow", "extrusion", "revolution" };
+    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube" };
   return names;
 }
 

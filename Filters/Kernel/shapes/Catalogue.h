@@ -41,9 +41,8 @@ struct Shape
 };
 
 /// Names accepted by makeShape, 2D first: rectangle, rounded-rectangle, circle, ellipse,
-/// annulus, l-shape, star, blob, spiral, plate-with-holes, narrow-passage, box,
-/// notched-cube (edge = width, the (+, +, +) eighth cut away), cylinder, pillow, extrusion,
-/// revolution.
+/// annulus, l-shape, star, blob, spiral, plate-with-holes, narrow-passage, box, cylinder,
+/// pillow, extrusion, revolution, notched-cube (edge = width, the (+, +, +) eighth cut away).
 const std::vector<std::string>& catalogueNames();
 
 /// Builds the named shape; throws InputError for an unknown name or parameters that make
