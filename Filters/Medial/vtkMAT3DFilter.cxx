@@ -51,6 +51,7 @@ int vtkMAT3DFilter::RequestData(
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSheets = this->NumberOfVerifiedPoints = 0;
+  this->NumberOfSkeletalEdges = 0;
   this->NumberOfTouchpointMismatches = 0;
   this->MaximumVerifiedError = this->TracingSeconds = this->VerificationSeconds = 0.0;
   this->VerificationPassed = true;
@@ -95,6 +96,7 @@ int vtkMAT3DFilter::RequestData(
     exactmat::writeMedialComplex(complex, frame, generatorIds, false, output);
     this->NumberOfJunctions = mat.junctionCount();
     this->NumberOfSeams = static_cast<int>(mat.seams.size());
+    this->NumberOfSkeletalEdges = static_cast<int>(mat.skeletalEdges.size());
     this->NumberOfSheets = static_cast<int>(mat.sheets.size());
     // The sheets' topology, for vtkSheetInterpolator: face pair and bounding elements.
     vtkNew<vtkStringArray> sheetGovernors, sheetSeams, sheetEdges;
@@ -163,6 +165,7 @@ void vtkMAT3DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
   os << indent << "NumberOfSeams: " << this->NumberOfSeams << "\n";
+  os << indent << "NumberOfSkeletalEdges: " << this->NumberOfSkeletalEdges << "\n";
   os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
   os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

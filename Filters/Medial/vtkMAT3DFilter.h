@@ -79,6 +79,8 @@ public:
   /// Results of the last run.
   vtkGetMacro(NumberOfJunctions, int);
   vtkGetMacro(NumberOfSeams, int);
+  /// Rims: skeletal edges where a sheet of two reflex edges closes at their common corner.
+  vtkGetMacro(NumberOfSkeletalEdges, int);
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
   vtkGetMacro(MaximumVerifiedError, double);
@@ -101,6 +103,7 @@ protected:
   bool VerificationPassed = true;
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
+  int NumberOfSkeletalEdges = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
   double MaximumVerifiedError = 0.0;

@@ -11,7 +11,7 @@
  *
  * Catalogue (Shape): rectangle, rounded-rectangle, circle, ellipse, annulus, l-shape, star,
  * blob, spiral, plate-with-holes, narrow-passage (2D); box, cylinder, pillow, extrusion,
- * revolution, notched-cube (3D). Which parameters each uses is listed at SetShape(). Shape = UserDefined
+ * revolution, notched-cube, stepped-block (3D). Which parameters each uses is listed at SetShape(). Shape = UserDefined
  * outputs the entities given with AddCurve() / AddSurface().
  *
  * The output is checked: the boundary must form closed loops (2D) or a closed surface (3D);
@@ -56,6 +56,7 @@ public:
     Extrusion,            ///< Radius, Length: the blob profile extruded
     Revolution,           ///< Radius: the blob profile revolved 360° about z
     NotchedCube,          ///< Width: the cube with its (+, +, +) eighth cut away (reflex edges, corner)
+    SteppedBlock,         ///< Width × Height × Length: a base and a half-size block on top
     UserDefined = 100     ///< the entities added with AddCurve() / AddSurface()
   };
 

@@ -41,7 +41,7 @@ struct Traced
     std::vector<Ball> out;
     const Normalisation& n = boundary->userFrame();
     for (const MAT3DNode& node : mat.nodes)
-      if (node.vertex < 0)
+      if (node.vertex < 0 && !node.seamEnd)
         out.push_back({ n.toUser(node.ball.x), n.lengthToUser(node.ball.r), node.touchpoints });
     return out;
   }
@@ -452,6 +452,32 @@ TEST(MAT3D, NotchedCubeTouchesItsReflexCorner)
   for (const Traced::Ball& j : t.junctions())
     EXPECT_TRUE(hasJunction(catalogue, 2.0 * j.x - Vec3(2, 2, 2), 2.0 * j.r, j.touchpoints)) << j.x.transpose();
   expectVerified(catalogue, "catalogue notched cube");
+}
+
+// The catalogue's stepped block (a 4 × 2 × 1.5 base, a 2 × 1 × 1.5 block centred on it):
+// four reflex edges around the block's foot meet its convex vertical edges at four corners.
+// There the sheet of the two reflex edges closes along a rim: a straight segment from the
+// corner into the base whose balls touch the corner only (radius = distance to it), ending
+// where the seam of those edges and the base's bottom meets it.
+TEST(MAT3D, SteppedBlockHasRimsAtItsInnerCorners)
+{
+  const Traced t = trace(patchPieces(makeShape("stepped-block").surfaces));
+  expectVerified(t, "stepped block");
+  ASSERT_EQ(t.mat.skeletalEdges.size(), 4u);
+  const Normalisation& n = t.boundary->userFrame();
+  for (const MAT3DSkeletalEdge& rim : t.mat.skeletalEdges)
+  {
+    const Vec3 corner = n.toUser(t.boundary->vertices()[rim.vertex].point);
+    EXPECT_NEAR(std::abs(corner.x()), 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(corner.y()), 0.5, 1e-12);
+    EXPECT_NEAR(corner.z(), 0.0, 1e-12);
+    EXPECT_TRUE(t.mat.nodes[rim.startNode].seamEnd);
+    EXPECT_EQ(t.mat.nodes[rim.endNode].vertex, rim.vertex);
+    for (const MedialBall3D& b : rim.balls)
+      EXPECT_NEAR((n.toUser(b.x) - corner).norm(), n.lengthToUser(b.r), 1e-12);
+  }
+  // Symmetric under x → −x and y → −y: 12 junctions.
+  EXPECT_EQ(t.junctions().size(), 12u);
 }
 
 // Random staircases (columns of unit cells whose heights never increase along x or y, every

@@ -639,6 +639,7 @@ int run3D(const Arguments& a)
     b.countVertices(exactmat::VertexKind::Reflex), b.userFrame().lengthToUser(b.diagonal()));
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
+  std::printf("  skeletal edges      %d (rims at corners of reflex edges)\n", mat->GetNumberOfSkeletalEdges());
   std::printf("  sheets              %d (face pairs and their bounding seams; surfaces not yet)\n",
     mat->GetNumberOfSheets());
   std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));

@@ -4,7 +4,9 @@
 #include "nurbs/BezierExtraction.h"
 #include "shapes/Primitives.h"
 
+#include <array>
 #include <cmath>
+#include <functional>
 
 namespace exactmat
 {
@@ -126,39 +128,40 @@ std::vector<NurbsSurface> boxFaces(double w, double h, double l)
   };
 }
 
-// The cube of edge w centred at the origin with the corner cube of edge w/2 at (+, +, +) cut
-// away: the boundary of seven cells of a 2 × 2 × 2 grid, one square per exposed cell side
-// (coplanar squares meet at smooth edges; three reflex edges meet at the reflex corner at
-// the origin).
-std::vector<NurbsSurface> notchedCubeFaces(double w)
+// The boundary of the filled cells of a grid with cell walls at xs × ys × zs: one bilinear
+// square per exposed cell side, counter-clockwise seen from outside (coplanar squares meet
+// at smooth edges, so every face conforms).
+std::vector<NurbsSurface> gridSolidFaces(const std::array<std::vector<double>, 3>& walls,
+  const std::function<bool(int, int, int)>& filled)
 {
-  const double s = w / 2;
-  auto filled = [](int i, int j, int k) {
-    return i >= 0 && i < 2 && j >= 0 && j < 2 && k >= 0 && k < 2 && !(i == 1 && j == 1 && k == 1);
+  const int n[3] = { static_cast<int>(walls[0].size()) - 1, static_cast<int>(walls[1].size()) - 1,
+    static_cast<int>(walls[2].size()) - 1 };
+  auto inside = [&](const std::array<int, 3>& c) {
+    return c[0] >= 0 && c[0] < n[0] && c[1] >= 0 && c[1] < n[1] && c[2] >= 0 && c[2] < n[2] && filled(c[0], c[1], c[2]);
   };
   std::vector<NurbsSurface> faces;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      for (int k = 0; k < 2; ++k)
+  for (int i = 0; i < n[0]; ++i)
+    for (int j = 0; j < n[1]; ++j)
+      for (int k = 0; k < n[2]; ++k)
       {
-        if (!filled(i, j, k))
+        const std::array<int, 3> cell{ { i, j, k } };
+        if (!inside(cell))
           continue;
-        const int cell[3] = { i, j, k };
         for (int a = 0; a < 3; ++a)
           for (int side : { -1, 1 })
           {
-            int next[3] = { i, j, k };
+            std::array<int, 3> next = cell;
             next[a] += side;
-            if (filled(next[0], next[1], next[2]))
+            if (inside(next))
               continue;
             // Corners (u, v) along the two other axes b, c with e_b × e_c = e_a:
             // counter-clockwise seen from outside on the + side, reversed on the − side.
             const int b = (a + 1) % 3, c = (a + 2) % 3;
             auto corner = [&](int u, int v) {
               Vec3 p;
-              p[a] = (cell[a] + (side > 0 ? 1 : 0)) * s - s;
-              p[b] = (cell[b] + u) * s - s;
-              p[c] = (cell[c] + v) * s - s;
+              p[a] = walls[a][cell[a] + (side > 0 ? 1 : 0)];
+              p[b] = walls[b][cell[b] + u];
+              p[c] = walls[c][cell[c] + v];
               return p;
             };
             if (side > 0)
@@ -168,6 +171,24 @@ std::vector<NurbsSurface> notchedCubeFaces(double w)
           }
       }
   return faces;
+}
+
+// The cube of edge w centred at the origin with the corner cube of edge w/2 at (+, +, +) cut
+// away: three reflex edges meet at the reflex corner at the origin.
+std::vector<NurbsSurface> notchedCubeFaces(double w)
+{
+  const std::vector<double> walls{ -w / 2, 0.0, w / 2 };
+  return gridSolidFaces({ walls, walls, walls }, [](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); });
+}
+
+// Two unioned boxes: a w × h × l/2 base (centred on the z axis, from z = −l/2 to 0) and a
+// w/2 × h/2 × l/2 block centred on top of it — four reflex edges around the block's foot,
+// corners where they meet its convex vertical edges.
+std::vector<NurbsSurface> steppedBlockFaces(double w, double h, double l)
+{
+  const std::vector<double> xs{ -w / 2, -w / 4, w / 4, w / 2 }, ys{ -h / 2, -h / 4, h / 4, h / 2 },
+    zs{ -l / 2, 0.0, l / 2 };
+  return gridSolidFaces({ xs, ys, zs }, [](int i, int j, int k) { return k == 0 || (i == 1 && j == 1); });
 }
 
 // A disk of radius r at height z as one rational biquadratic patch whose four sides are the
@@ -296,7 +317,7 @@ const std::vector<std::string>& catalogueNames()
 {
   static const std::vector<std::string> names{ "rectangle", "rounded-rectangle", "circle",
     "ellipse", "annulus", "l-shape", "star", "blob", "spiral", "plate-with-holes",
-    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube" };
+    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube", "stepped-block" };
   return names;
 }
 
@@ -455,6 +476,14 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
     requirePositive(w, "width", name);
     shape.dimension = 3;
     shape.surfaces = notchedCubeFaces(w);
+  }
+  else if (name == "stepped-block")
+  {
+    requirePositive(w, "width", name);
+    requirePositive(h, "height", name);
+    requirePositive(s.length, "length", name);
+    shape.dimension = 3;
+    shape.surfaces = steppedBlockFaces(w, h, s.length);
   }
   else if (name == "cylinder")
   {
