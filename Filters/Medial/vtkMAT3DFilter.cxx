@@ -59,6 +59,8 @@ int vtkMAT3DFilter::RequestData(
   {
     exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
     exactmat::checkParameter("MaximumStep", this->MaximumStep, 1e-6, 0.5);
+    exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
+    exactmat::checkParameter("JunctionCheckStep", this->JunctionCheckStep, 1e-9, 1.0);
     exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
     if (!exactmat::gridHasSurfaceCells(input))
       exactmat::fail("the input holds no surface cells: vtkMAT3DFilter takes the faces of a solid "
@@ -71,6 +73,9 @@ int vtkMAT3DFilter::RequestData(
     exactmat::MAT3DOptions options;
     options.tolerance = this->Tolerance;
     options.maxStep = this->MaximumStep;
+    options.fixedStep = this->FixedStep;
+    options.step = this->Step;
+    options.junctionCheckStep = this->JunctionCheckStep;
     options.progress = [this](double f) { this->UpdateProgress(0.8 * f); };
     const exactmat::MAT3D mat = exactmat::computeMAT3D(boundary, options);
     this->TracingSeconds = secondsSince(t0);
@@ -161,6 +166,9 @@ void vtkMAT3DFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumStep: " << this->MaximumStep << "\n";
+  os << indent << "FixedStep: " << this->FixedStep << "\n";
+  os << indent << "Step: " << this->Step << "\n";
+  os << indent << "JunctionCheckStep: " << this->JunctionCheckStep << "\n";
   os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
   os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";

@@ -30,12 +30,13 @@
  * Radius, the number of touchpoints); a failure warns, sets VerificationPassed false and
  * the output's field data (`VerificationStatus`, `VerificationReport`).
  *
- * @warning Supported today: solids whose edges are convex or smooth, with at least one
- * convex vertex — polyhedra (convex ones; non-convex ones have reflex edges) and free-form
- * solids such as the catalogue's pillow. Reflex edges and corners, skeletal edges (the
- * curvature criterion), solids without a convex vertex (ellipsoid, cylinder, torus) and the
- * medial sheets (vtkSheetInterpolator) are not yet: the filter fails with an error naming
- * the face or edge, never with a partial MAT.
+ * @warning Supported today: solids with convex, reflex and smooth edges and reflex corners
+ * that have a vertex with a convex edge — polyhedra (notched, stepped, staircases) and
+ * free-form solids such as the catalogue's pillow; rims where the sheet of two reflex edges
+ * closes at their corner are output as skeletal edges. Skeletal edges of curved faces (the
+ * curvature criterion), solids without a vertex with a convex edge (ellipsoid, cylinder,
+ * torus) and the medial sheets (vtkSheetInterpolator) are not yet: the filter fails with an
+ * error naming the face or edge, never with a partial MAT.
  */
 #ifndef vtkMAT3DFilter_h
 #define vtkMAT3DFilter_h
@@ -62,6 +63,19 @@ public:
   /// emptiness checks that find junctions. Default 0.05.
   vtkSetClampMacro(MaximumStep, double, 1e-6, 0.5);
   vtkGetMacro(MaximumStep, double);
+  ///@}
+
+  ///@{
+  /// Fixed-step mode (reproduces the thesis): a constant tracing step along the seams and the
+  /// spacing of the junction (ball-emptiness) checks, fractions of the solid's size.
+  /// Defaults: off, 1e-3, 1e-2.
+  vtkSetMacro(FixedStep, bool);
+  vtkGetMacro(FixedStep, bool);
+  vtkBooleanMacro(FixedStep, bool);
+  vtkSetClampMacro(Step, double, 1e-9, 1e-1);
+  vtkGetMacro(Step, double);
+  vtkSetClampMacro(JunctionCheckStep, double, 1e-9, 1.0);
+  vtkGetMacro(JunctionCheckStep, double);
   ///@}
 
   ///@{
@@ -98,6 +112,9 @@ protected:
 
   double Tolerance = 1e-4;
   double MaximumStep = 0.05;
+  bool FixedStep = false;
+  double Step = 1e-3;
+  double JunctionCheckStep = 1e-2;
   bool VerifyOutput = true;
   double VerificationTolerance = 1e-9;
   bool VerificationPassed = true;

@@ -536,6 +536,38 @@ TEST(MAT3D, ExtrudedPolygonsAgreeWithTheSweptSolidMAT)
   }
 }
 
+// The thesis' fixed-step mode (constant step 1e-3 of the size, emptiness checked every 1e-2):
+// the same junctions as the adaptive mode, every point verified, steps of the given length.
+TEST(MAT3D, FixedStepModeFindsTheSameJunctions)
+{
+  MAT3DOptions fixed;
+  fixed.fixedStep = true;
+  fixed.step = 1e-3;
+  fixed.junctionCheckStep = 1e-2;
+  std::mt19937 rng(4);
+  const std::vector<std::pair<std::string, std::vector<PatchPiece>>> solids{ { "box", boxPolyhedron(2.0, 1.5, 1.0) },
+    { "notched cube", notchedCube(2.0, 1.0) }, { "frustum", randomFrustum(rng, 7) },
+    { "box with a free-form top", boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5) } };
+  for (const auto& [name, pieces] : solids)
+  {
+    const Traced adaptive = trace(pieces);
+    const Traced stepped = trace(pieces, fixed);
+    EXPECT_EQ(stepped.junctions().size(), adaptive.junctions().size()) << name;
+    for (const Traced::Ball& j : adaptive.junctions())
+      EXPECT_TRUE(hasJunction(stepped, j.x, j.r, j.touchpoints, 1e-9)) << name << ": " << j.x.transpose();
+    EXPECT_EQ(stepped.mat.seams.size(), adaptive.mat.seams.size()) << name;
+    // Steps of the fixed length (crossings and the ends aside): many more points.
+    size_t points = 0;
+    for (const MAT3DSeam& seam : stepped.mat.seams)
+      points += seam.balls.size();
+    size_t adaptivePoints = 0;
+    for (const MAT3DSeam& seam : adaptive.mat.seams)
+      adaptivePoints += seam.balls.size();
+    EXPECT_GT(points, 3 * adaptivePoints) << name;
+    expectVerified(stepped, name + " (fixed steps)");
+  }
+}
+
 TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
 {
   // The same junctions (moved with the solid) and every point verified, for a box and random

@@ -332,7 +332,7 @@ class PythonPackage(unittest.TestCase):
             errors.check()
 
     def test_mat3d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 4)
+        self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 7)
 
     def test_defaults_equal_the_paraview_xml(self):
         proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 13)

@@ -173,6 +173,11 @@ class ExactmatCLI(unittest.TestCase):
             x = out.GetPoint(diagonal[0])
             for c in x:
                 self.assertAlmostEqual(c, -2.0 + k, places=9)
+            # The thesis' fixed steps: the same junctions, many more points.
+            r2 = run("3d", "--shape", "notched-cube", "--step", "2e-3", "-o", "notch-fixed.vtp", cwd=tmp)
+            self.assertEqual(r2.returncode, 0, r2.stderr)
+            self.assertEqual(summary_value(r2.stdout, "junctions"), 7)
+            self.assertGreater(summary_value(r2.stdout, "points"), 2 * summary_value(r.stdout, "points"))
             # A solid the 3D tracer cannot do yet is refused with exit 1 and the reason.
             r = run("3d", "--shape", "cylinder", "-o", "c.vtp", cwd=tmp)
             self.assertEqual(r.returncode, 1)

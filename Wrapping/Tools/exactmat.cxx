@@ -4,7 +4,7 @@
 //               [--png OUT.png] [--shape NAME]
 //   exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [...]
 //   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp] [...]
-//   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T] [--max-step H] [--png OUT.png]
+//   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]] [--max-step H] [--png OUT.png]
 //   exactmat shapes
 //
 // INPUT is a .vtu of (rational) Bézier cells or ExactMAT's .json NURBS format; without
@@ -66,8 +66,8 @@ const char* Usage = R"(usage:
                    [--sheet-resolution R] [--tolerance T | --step S]
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
-  exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T] [--max-step H] [--png OUT.png]
-              [--shape NAME] [--verify-tolerance V]
+  exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
+              [--max-step H] [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat shapes          list the bundled shapes
 
   INPUT          boundary curves: a .vtu of Bezier cells, or ExactMAT .json NURBS;
@@ -97,6 +97,8 @@ const char* Usage = R"(usage:
   surfaces; default: the bundled free-form shape pillow, or --shape NAME)
   --tolerance T  seam polylines within T x solid size of the seams (default 1e-4)
   --max-step H   longest step along a seam, fraction of the size (default 0.05)
+  --step S       fixed steps of S x solid size along the seams, as in the thesis (junction
+                 check every B, default 10 S)
   OUT.vtp defaults to exactmat-3d.vtp
 )";
 
@@ -617,6 +619,12 @@ int run3D(const Arguments& a)
   mat->SetInputData(solid);
   mat->SetTolerance(a.tolerance);
   mat->SetMaximumStep(a.maxStep);
+  if (a.step > 0.0)
+  {
+    mat->FixedStepOn();
+    mat->SetStep(a.step);
+    mat->SetJunctionCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
+  }
   mat->SetVerificationTolerance(a.verifyTolerance);
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<WarningLine> warnings;

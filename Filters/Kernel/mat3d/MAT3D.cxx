@@ -691,7 +691,29 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   seam.startNode = startNode;
   seam.balls.push_back(ball); // the node's ball restricted to the triplet
   const double tol = Options.tolerance * Size, hMax = Options.maxStep * Size;
-  double h = std::min(hMax, 1e-3 * Size);
+  const bool fixed = Options.fixedStep;
+  const double hFixed = Options.step * Size, checkSpacing = Options.junctionCheckStep * Size;
+  double h = fixed ? hFixed : std::min(hMax, 1e-3 * Size);
+  double sinceCheck = 0.0;          // fixed mode: arc length since the last emptiness check
+  size_t lastChecked = 0;           // fixed mode: the last seam ball known empty
+  // A ball found not empty: the junction lies in the step before the first seam ball since
+  // the last check that is not empty (fixed mode), else in the step from `before` by h.
+  // The balls past it are dropped.
+  auto junctionSinceCheck = [&](const MedialBall3D& before, const Eigen::VectorXd& t, double h) {
+    size_t first = seam.balls.size();
+    for (size_t i = std::max<size_t>(lastChecked + 1, 1); i < seam.balls.size() && first == seam.balls.size(); ++i)
+      if (!empty(seam.balls[i]))
+        first = i;
+    if (first == seam.balls.size())
+      return junction(before, t, h);
+    const MedialBall3D from = seam.balls[first - 1];
+    Eigen::VectorXd direction = System.tangent(from);
+    const Vec3 ahead = seam.balls[first].x - from.x;
+    if (direction.segment<3>(6).dot(ahead) < 0.0)
+      direction = -direction;
+    seam.balls.resize(first);
+    return junction(from, direction, ahead.norm());
+  };
   Eigen::VectorXd previous = tangent;
   int endNode = -1;
   int stalled = 0; // crossings in a row that made no progress along the seam
@@ -714,7 +736,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     }
     const Eigen::VectorXd predicted = ball.pack() + h * t;
     const double error = (next.x - predicted.segment<3>(6)).norm() + std::abs(next.r - predicted(9));
-    if (error > tol && h > 1e-9 * Size)
+    if (!fixed && error > tol && h > 1e-9 * Size)
     {
       h *= std::max(0.2, 0.8 * std::sqrt(tol / error));
       continue;
@@ -789,7 +811,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         polishJunction(touching);
       if (!empty(at) || touching.size() > 3)
       {
-        const MedialBall3D j = touching.size() > 3 ? touching : junction(ball, t, lo);
+        const MedialBall3D j = touching.size() > 3 ? touching : junctionSinceCheck(ball, t, lo);
         endNode = addNode(j, -1);
         seam.balls.push_back(j);
         break;
@@ -820,19 +842,30 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       seam.balls.push_back(at);
       ball = at;
       previous = t;
+      lastChecked = seam.balls.size() - 1; // emptiness was checked at the crossing
+      sinceCheck = 0.0;
       continue;
     }
-    if (const int face = empty(next) ? reentering(next) : -1; face >= 0)
-      fail("3D MAT: the seam through ", describe(ball), " reaches a ball that ", Generators[face].name(),
-        " touches twice or curves into (a junction of one face with itself, or a skeletal edge): "
-        "not supported yet");
-    if (!empty(next))
+    // Fixed mode checks emptiness only every junctionCheckStep (as the thesis does).
+    sinceCheck += h;
+    const bool check = !fixed || sinceCheck >= checkSpacing;
+    if (check)
     {
-      const MedialBall3D j = junction(ball, t, h);
+      sinceCheck = 0.0;
+      if (const int face = empty(next) ? reentering(next) : -1; face >= 0)
+        fail("3D MAT: the seam through ", describe(ball), " reaches a ball that ", Generators[face].name(),
+          " touches twice or curves into (a junction of one face with itself, or a skeletal edge): "
+          "not supported yet");
+    }
+    if (check && !empty(next))
+    {
+      const MedialBall3D j = junctionSinceCheck(ball, t, h);
       endNode = addNode(j, -1);
       seam.balls.push_back(j);
       break;
     }
+    if (check)
+      lastChecked = seam.balls.size(); // `next`, pushed below
     // A degenerate seam (more touchpoints than its triplet: a square tube's axis) ends
     // where one of its extra contacts leaves: located by bisection on the contact count.
     if (seam.touchpoints > 3 && contactCount(next) != seam.touchpoints)
@@ -867,7 +900,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     seam.balls.push_back(next);
     ball = next;
     previous = t;
-    h = std::min(hMax, h * 1.5);
+    h = fixed ? hFixed : std::min(hMax, h * 1.5);
   }
   seam.endNode = endNode;
   // A ball pushed at a crossing a hair before the end node is the node itself.

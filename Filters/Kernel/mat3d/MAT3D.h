@@ -41,6 +41,12 @@ struct MAT3DOptions
 {
   double tolerance = 1e-4; ///< chord deviation of a seam's polyline, fraction of the size
   double maxStep = 0.05;   ///< longest step along a seam (junction-check spacing), fraction
+  /// Fixed-step mode (reproduces the thesis): a constant tracing step along the seams and
+  /// the spacing of the emptiness (junction) checks, fractions of the size; a junction
+  /// found at a check is located back to the step where the ball stopped being empty.
+  bool fixedStep = false;
+  double step = 1e-3;
+  double junctionCheckStep = 1e-2;
   int maxSeams = 100000;
   int maxStepsPerSeam = 200000;
   /// Called after every seam with the fraction of faces reached so far (0 … 1).
