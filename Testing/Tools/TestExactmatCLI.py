@@ -186,6 +186,30 @@ class ExactmatCLI(unittest.TestCase):
             self.assertEqual(r.returncode, 1)
             self.assertIn("no surface cells", r.stderr)
 
+    def test_input_alone_picks_2d_or_3d(self):
+        # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT.
+        from exactmat import vtkNURBSSource
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+        with tempfile.TemporaryDirectory() as tmp:
+            source = vtkNURBSSource()
+            source.SetShapeName("stepped-block")
+            writer = vtkXMLUnstructuredGridWriter()
+            writer.SetInputConnection(source.GetOutputPort())
+            writer.SetFileName(os.path.join(tmp, "block.vtu"))
+            self.assertEqual(writer.Write(), 1)
+            r = run("block.vtu", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("3D medial axis", r.stdout)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 12)
+            self.assertEqual(summary_value(r.stdout, "skeletal edges"), 4)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "exactmat-3d.vtp")))
+            r = run(os.path.join(DATA, "two-loops.json"), cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("2D medial axis", r.stdout)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "exactmat-2d.vtp")))
+            r = run("nothing.vtu", cwd=tmp)
+            self.assertEqual(r.returncode, 1)
+
     def test_sweep_errors(self):
         r = run("extrude")
         self.assertEqual(r.returncode, 2)

@@ -60,6 +60,7 @@ constexpr int ExitVerification = 3; ///< the MAT was written but its self-verifi
 constexpr int ExitOutputError = 4;  ///< the result could not be written
 
 const char* Usage = R"(usage:
+  exactmat INPUT [options]  2d or 3d, chosen by INPUT's cells (curves or faces)
   exactmat 2d [INPUT] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
               [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat extrude [PROFILE] --length L [-o OUT.vtp] [--png OUT.png] [--shape NAME]
@@ -76,7 +77,8 @@ const char* Usage = R"(usage:
   --tolerance T  adaptive steps: polyline within T x domain size of the MAT (default 1e-4)
   --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
                  default 10 S)
-  --png OUT.png  a picture of the boundary and the MAT coloured by radius
+  --png OUT.png  a picture of the boundary and the MAT coloured by radius (--png auto:
+                 exactmat-2d.png, exactmat-3d.png, ... after the command)
   --verify-tolerance V  the self-verification's bound on |distance - radius| / size
                  (default 1e-9); a failed verification exits with 3
   -h, --help     this text
@@ -107,7 +109,7 @@ struct Arguments
   std::string command, input, output, png, shape = "plate-with-holes";
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
-  bool shapeGiven = false;
+  bool shapeGiven = false, outputGiven = false;
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
 
@@ -146,6 +148,8 @@ std::vector<double> numberList(const std::string& flag, const std::string& text)
   return v;
 }
 
+bool endsWith(const std::string& s, const std::string& suffix);
+
 Arguments parse(int argc, char* argv[])
 {
   Arguments a;
@@ -157,6 +161,12 @@ Arguments parse(int argc, char* argv[])
     std::cout << Usage;
     std::exit(0);
   }
+  // `exactmat INPUT [options]`: 2d or 3d by the input's cells (decided in main).
+  if (endsWith(a.command, ".vtu") || endsWith(a.command, ".json"))
+  {
+    a.input = a.command;
+    a.command = "auto";
+  }
   for (int i = 2; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -166,7 +176,10 @@ Arguments parse(int argc, char* argv[])
       return argv[++i];
     };
     if (arg == "-o" || arg == "--output")
+    {
       a.output = value();
+      a.outputGiven = true;
+    }
     else if (arg == "--png")
       a.png = value();
     else if (arg == "--tolerance")
@@ -688,8 +701,25 @@ int main(int argc, char* argv[])
       std::cout << vtkNURBSSource::GetCatalogueShapeName(i) << "\n";
     return 0;
   }
-  if (a.command != "2d" && a.command != "3d" && a.command != "extrude" && a.command != "revolve")
-    usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, shapes)");
+  if (a.command != "2d" && a.command != "3d" && a.command != "extrude" && a.command != "revolve" &&
+    a.command != "auto")
+    usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, shapes; or give " +
+      "a .vtu or .json INPUT first)");
+  Arguments chosen = a;
+  if (a.command == "auto")
+  {
+    // Faces make a solid (3d), curves a planar domain (2d).
+    vtkNew<ErrorLine> errors;
+    std::string label;
+    const vtkSmartPointer<vtkUnstructuredGrid> boundary = loadBoundary(a, errors, label);
+    if (!boundary)
+      return ExitInputError;
+    chosen.command = exactmat::gridHasSurfaceCells(boundary) ? "3d" : "2d";
+    if (!a.outputGiven)
+      chosen.output = "exactmat-" + chosen.command + ".vtp";
+  }
+  if (chosen.png == "auto")
+    chosen.png = "exactmat-" + chosen.command + ".png";
   // Off-screen rendering with this VTK needs an X display: run under Xvfb when none is set.
   const char* display = std::getenv("DISPLAY");
   if (!a.png.empty() && (!display || !*display) && !std::getenv("EXACTMAT_NO_XVFB"))
@@ -706,7 +736,7 @@ int main(int argc, char* argv[])
   }
   try
   {
-    return a.command == "2d" ? run2D(a) : a.command == "3d" ? run3D(a) : run25D(a);
+    return chosen.command == "2d" ? run2D(chosen) : chosen.command == "3d" ? run3D(chosen) : run25D(chosen);
   }
   catch (const exactmat::InputError& e)
   {
