@@ -25,7 +25,9 @@
  * exactmat::MedialPoint3DType: 0 sheet, 1 seam, 2 junction, 3 seam end, 4 skeletal edge,
  * 5 on a convex edge or vertex of the solid, 6 centre of a ball touching a circle);
  * `Touchpoints` (int: distinct touching points of the ball by construction, 0 = not
- * finite). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
+ * finite); vtkMAT3DFilter also `Footpoint0`, `Footpoint1`, `Footpoint2` (3-vectors: the
+ * ball's touchpoints — a seam point's three, a junction's first three, the vertex on a rim
+ * or at radius 0). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
  * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet, 6 mid-sheet),
  * `ElementId`
  * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
@@ -56,6 +58,7 @@ constexpr const char* Radius = "Radius";
 constexpr const char* PointType = "PointType";
 constexpr const char* Footpoint0 = "Footpoint0";
 constexpr const char* Footpoint1 = "Footpoint1";
+constexpr const char* Footpoint2 = "Footpoint2";
 constexpr const char* SegmentId = "SegmentId";
 constexpr const char* Generator0 = "Generator0";
 constexpr const char* Generator1 = "Generator1";

@@ -8,6 +8,7 @@
 
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
@@ -193,6 +194,20 @@ TEST(vtkMAT3DFilter, NotchedCubeNamesItsReflexGenerators)
     }
   }
   EXPECT_EQ(diagonal, 1);
+  // The touchpoints: each at distance Radius from its point.
+  vtkDataArray* feet[3] = { out->GetPointData()->GetArray(arrays::Footpoint0),
+    out->GetPointData()->GetArray(arrays::Footpoint1), out->GetPointData()->GetArray(arrays::Footpoint2) };
+  ASSERT_TRUE(feet[0] && feet[1] && feet[2]);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3], f[3];
+    out->GetPoint(i, x);
+    for (vtkDataArray* foot : feet)
+    {
+      foot->GetTuple(i, f);
+      EXPECT_NEAR(std::sqrt(vtkMath::Distance2BetweenPoints(x, f)), radius->GetTuple1(i), 1e-9) << i;
+    }
+  }
 }
 
 TEST(vtkMAT3DFilter, UnsupportedAndWrongInputSayWhy)

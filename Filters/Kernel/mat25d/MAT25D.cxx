@@ -92,7 +92,12 @@ private:
 
   int addPoint(const Vec3& x, double r, MedialPoint3DType type, int contacts)
   {
-    C.points.push_back({ x, r, type, contacts });
+    MedialPoint3D p;
+    p.x = x;
+    p.radius = r;
+    p.type = type;
+    p.contacts = contacts;
+    C.points.push_back(std::move(p));
     return static_cast<int>(C.points.size()) - 1;
   }
 

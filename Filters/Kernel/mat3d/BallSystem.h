@@ -24,6 +24,8 @@ struct MedialBall3D
   std::vector<Vec2> q;
   Vec3 x = Vec3::Zero();
   double r = 0.0;
+  /// The touch points, recorded for the output when tracing ends (not an unknown).
+  Vec3List touches;
 
   int size() const { return static_cast<int>(generators.size()); }
   Eigen::VectorXd pack() const;

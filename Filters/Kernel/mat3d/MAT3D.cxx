@@ -1109,6 +1109,20 @@ MAT3D Tracer::run()
     }
     node.touchpoints = static_cast<int>(points.size());
   }
+  // Every ball's touch points, for the output.
+  auto record = [this](MedialBall3D& ball) {
+    ball.touches.clear();
+    for (int i = 0; i < ball.size(); ++i)
+      ball.touches.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
+  };
+  for (MAT3DNode& node : Result.nodes)
+    record(node.ball);
+  for (MAT3DSeam& seam : Result.seams)
+    for (MedialBall3D& ball : seam.balls)
+      record(ball);
+  for (MAT3DSkeletalEdge& rim : Result.skeletalEdges)
+    for (MedialBall3D& ball : rim.balls)
+      ball.touches = { B.vertices()[rim.vertex].point };
   collectSheets();
   for (const Generator3D& g : Generators)
     Result.generators.push_back({ g.kind(), g.entity(), g.faces() });
@@ -1132,6 +1146,7 @@ MedialComplex MAT3D::complex() const
     p.radius = n.ball.r;
     p.type = n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
     p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
+    p.touches = n.ball.touches;
     c.points.push_back(p);
     if (n.vertex < 0 && !n.seamEnd)
     {
@@ -1155,6 +1170,7 @@ MedialComplex MAT3D::complex() const
       p.radius = s.balls[i].r;
       p.type = MedialPoint3DType::Seam;
       p.contacts = s.touchpoints;
+      p.touches = s.balls[i].touches;
       c.points.push_back(p);
       e.points.push_back(static_cast<int>(c.points.size()) - 1);
     }
@@ -1174,6 +1190,7 @@ MedialComplex MAT3D::complex() const
       p.radius = rim.balls[i].r;
       p.type = MedialPoint3DType::SkeletalEdge;
       p.contacts = 1;
+      p.touches = rim.balls[i].touches;
       c.points.push_back(p);
       e.points.push_back(static_cast<int>(c.points.size()) - 1);
     }

@@ -49,6 +49,9 @@ struct MedialPoint3D
   /// How many distinct touchpoints the ball has, by construction; 0 = not a finite count
   /// (radius 0, or a whole curve of contact).
   int contacts = 0;
+  /// The points where the ball touches, where its producer records them (the 3D tracer:
+  /// its generators' touches, three for a seam point, one per generator at a junction).
+  Vec3List touches;
 };
 
 struct MedialElement

@@ -12,6 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace exactmat
@@ -91,6 +93,31 @@ void writeMedialComplex(const MedialComplex& mat, const Normalisation& frame,
   out->GetPointData()->SetScalars(radius);
   out->GetPointData()->AddArray(type);
   out->GetPointData()->AddArray(touchpoints);
+  // The touchpoints (Footpoint0 … 2, user frame) where the producer recorded them: a seam
+  // point's three, a junction's first three, a radius-0 or rim point's one repeated; NaN
+  // where none is recorded.
+  bool anyTouches = false;
+  for (const MedialPoint3D& p : mat.points)
+    anyTouches = anyTouches || !p.touches.empty();
+  if (anyTouches)
+  {
+    const char* names[3] = { arrays::Footpoint0, arrays::Footpoint1, arrays::Footpoint2 };
+    for (int k = 0; k < 3; ++k)
+    {
+      vtkNew<vtkDoubleArray> foot;
+      foot->SetName(names[k]);
+      foot->SetNumberOfComponents(3);
+      foot->SetNumberOfTuples(points->GetNumberOfPoints());
+      for (size_t i = 0; i < mat.points.size(); ++i)
+      {
+        const Vec3List& touches = mat.points[i].touches;
+        const Vec3 x = touches.empty() ? Vec3::Constant(std::nan(""))
+                                       : frame.toUser(touches[std::min<size_t>(k, touches.size() - 1)]);
+        foot->SetTuple(static_cast<vtkIdType>(i), x.data());
+      }
+      out->GetPointData()->AddArray(foot);
+    }
+  }
   out->GetCellData()->AddArray(elementType);
   out->GetCellData()->AddArray(elementId);
   if (withSegmentId)
