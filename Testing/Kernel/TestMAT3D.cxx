@@ -570,14 +570,19 @@ TEST(MAT3D, FixedStepModeFindsTheSameJunctions)
 
 TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
 {
-  // The same junctions (moved with the solid) and every point verified, for a box and random
-  // frustums rotated, scaled by 1e-6 … 1e6 and moved up to 1e6 × their size.
+  // The same junctions (moved with the solid) and every point verified, for a box, random
+  // frustums and solids with reflex edges and corners (the notched cube, a staircase and the
+  // stepped block with rims) rotated, scaled by 1e-6 … 1e6 and moved up to 2e6 × their size:
+  // the grid solids' exact coincidences (two reflex edges' touches reaching their corner
+  // together) become rounding-level near-coincidences there.
   std::mt19937 rng(11);
-  const std::vector<std::vector<PatchPiece>> solids{ boxPolyhedron(2.0, 1.5, 1.0), randomFrustum(rng, 5), randomFrustum(rng, 9) };
+  const std::vector<std::vector<PatchPiece>> solids{ boxPolyhedron(2.0, 1.5, 1.0), randomFrustum(rng, 5),
+    randomFrustum(rng, 9), notchedCube(2.0, 1.0), randomStaircase(rng, 3, 2),
+    patchPieces(makeShape("stepped-block").surfaces) };
   const struct
   {
     double scale, offset;
-  } placements[] = { { 1.0, 0.0 }, { 1e-6, 3e-6 }, { 1e6, 0.0 }, { 1.0, 1e4 }, { 3.0, 2e6 } };
+  } placements[] = { { 1.0, 0.0 }, { 1e-6, 3e-6 }, { 1e6, 0.0 }, { 1.0, 1e4 }, { 3.0, 2e6 }, { 0.01, 1e3 } };
   for (size_t s = 0; s < solids.size(); ++s)
   {
     const Traced reference = trace(solids[s]);
@@ -593,6 +598,7 @@ TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
       expectVerified(t, what);
       ASSERT_EQ(t.mat.junctionCount(), static_cast<int>(expected.size())) << what;
       EXPECT_EQ(t.mat.seams.size(), reference.mat.seams.size()) << what;
+      EXPECT_EQ(t.mat.skeletalEdges.size(), reference.mat.skeletalEdges.size()) << what;
       for (const Traced::Ball& e : expected)
       {
         const Vec3 x = p.scale * (rotation * e.x) + offset;

@@ -327,9 +327,13 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
   const double slack = tolerance / Boundary->diagonal();
   if (Kind == GeneratorKind3D::ReflexEdge)
   {
-    const double out[4] = { -q.y(), q.y() - edgeAngle(q.x()), -q.x(), q.x() - 1.0 };
+    // The angle against slack, the edge parameter against the tolerance over the edge's
+    // length (a parameter step of 1 is that long).
+    const double chord = std::max((EdgeCurve.endPoint() - EdgeCurve.startPoint()).norm(), 1e-300);
+    const double out[4] = { -q.y() / slack, (q.y() - edgeAngle(q.x())) / slack, -q.x() * chord / tolerance,
+      (q.x() - 1.0) * chord / tolerance };
     const int worst = static_cast<int>(std::max_element(out, out + 4) - out);
-    return out[worst] > slack ? worst : -1;
+    return out[worst] > 1.0 ? worst : -1;
   }
   if (Kind == GeneratorKind3D::ReflexCorner)
   {

@@ -73,6 +73,10 @@ public:
     // accepted to the input's rounding.
     Degenerate = std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * Size;
     Margin = 1e-10 * Size;
+    // A touch this close outside its entity is on it: the input's rounding (a grid of squares
+    // far from the origin has a seam's touch running along a smooth edge; it must not cross
+    // back and forth).
+    OnEntity = std::max(Solve, Degenerate);
     NodeMerge = 1e-8 * Size;
   }
 
@@ -119,7 +123,7 @@ private:
   BoundingVolumeHierarchy Tree;
   std::map<std::pair<int, int>, int> SideEdge;
   std::vector<int> EdgeGenerator, CornerGenerator; // by edge / vertex, −1 where none
-  double Solve = 0.0, Degenerate = 0.0, Margin = 0.0, NodeMerge = 0.0;
+  double Solve = 0.0, Degenerate = 0.0, Margin = 0.0, NodeMerge = 0.0, OnEntity = 0.0;
 
   MAT3D Result;
   std::set<std::pair<int, Triplet>> Traced;
@@ -252,14 +256,17 @@ int Tracer::contactCount(const MedialBall3D& ball) const
   return static_cast<int>(points.size());
 }
 
-// Two of the ball's touchpoints at one point (a and b: their indices in the ball).
+// Two of the ball's touchpoints at one point (a and b: their indices in the ball): to the
+// input's rounding (a solid far from the origin has its two reflex edges' touches reach their
+// common corner a rounding apart), and a small fraction of the radius.
 bool Tracer::merging(const MedialBall3D& ball, int& a, int& b) const
 {
+  const double same = std::min(std::max(1e-9 * Size, 1e3 * Degenerate), 1e-3 * ball.r);
   for (int i = 0; i < ball.size(); ++i)
     for (int j = i + 1; j < ball.size(); ++j)
       if ((Generators[ball.generators[i]].evaluate(ball.q[i]).point -
             Generators[ball.generators[j]].evaluate(ball.q[j]).point)
-            .norm() <= 1e-9 * Size)
+            .norm() <= same)
       {
         a = i;
         b = j;
@@ -283,9 +290,9 @@ int Tracer::seamEndAtVertex(const MedialBall3D& ball, int a, int b)
       ", not at a vertex: skeletal edges of curved faces are not supported yet");
   const int existing = findNode(ball.x);
   const int node = addNode(ball, -1);
-  Result.nodes[node].seamEnd = true;
   if (existing >= 0)
-    return node; // its rim is there already
+    return node; // its rim is there already (or a junction is)
+  Result.nodes[node].seamEnd = true;
   // The vertex's node (radius 0, every face there).
   MedialBall3D corner;
   for (int e : B.vertices()[vertex].edges)
@@ -487,8 +494,9 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
 #endif
     if (worst < -1e-7)
       continue;
-    // The trial step. A touch at the node on a smooth edge between two faces (coplanar
-    // pieces) may leave into the neighbour: the seam starts on that one.
+    // The trial step. A touch at the node on the border of its entity (a smooth edge
+    // between coplanar pieces, a reflex edge's side or end) may leave it: the seam starts on
+    // the entity beyond.
     MedialBall3D start = ball, next;
     Eigen::VectorXd direction = d;
     bool inside = false;
@@ -498,19 +506,23 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
         break;
       int leaving = -1, side = -1;
       for (int i = 0; i < 3 && leaving < 0; ++i)
-        if ((side = Generators[next.generators[i]].exitSide(next.q[i], Solve)) >= 0)
+        if ((side = Generators[next.generators[i]].exitSide(next.q[i], OnEntity)) >= 0)
           leaving = i;
       inside = leaving < 0;
-      if (inside || Generators[start.generators[leaving]].kind() != GeneratorKind3D::Face)
+      if (inside)
         break;
-      const auto e = SideEdge.find({ start.generators[leaving], side });
-      if (e == SideEdge.end() || B.edges()[e->second].kind != VertexKind::Smooth)
+      MedialBall3D swapped = start;
+      try
+      {
+        crossOver(swapped, leaving, side);
+      }
+      catch (const InputError&)
+      {
+        break; // nothing beyond (a convex edge): this triplet does not leave here
+      }
+      if (std::count(swapped.generators.begin(), swapped.generators.end(), swapped.generators[leaving]) > 1)
         break;
-      const Edge3D& edge = B.edges()[e->second];
-      const int neighbour = edge.faceA == start.generators[leaving] ? edge.faceB : edge.faceA;
-      const Vec3 p = Generators[start.generators[leaving]].evaluate(start.q[leaving]).point;
-      start.generators[leaving] = neighbour;
-      start.q[leaving] = Generators[neighbour].parameterOf(p);
+      start = swapped;
       const Eigen::VectorXd n = System.tangent(start);
       direction = n.segment<4>(6).dot(d.segment<4>(6)) < 0.0 ? Eigen::VectorXd(-n) : n;
     }
@@ -766,7 +778,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     int leaving = -1, side = -1;
     for (int i = 0; i < 3 && leaving < 0; ++i)
     {
-      side = Generators[next.generators[i]].exitSide(next.q[i], Solve);
+      side = Generators[next.generators[i]].exitSide(next.q[i], OnEntity);
       if (side >= 0)
         leaving = i;
     }
@@ -784,7 +796,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         int out = -1, crossed = -1;
         for (int i = 0; i < 3 && solved && out < 0; ++i)
         {
-          crossed = Generators[m.generators[i]].exitSide(m.q[i], Solve);
+          crossed = Generators[m.generators[i]].exitSide(m.q[i], OnEntity);
           if (crossed >= 0)
             out = i;
         }
@@ -816,10 +828,19 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         seam.balls.push_back(j);
         break;
       }
+      // Two touchpoints meeting at a vertex as the touch leaves (the seam reaches a rim).
+      if (int a = -1, b = -1; merging(at, a, b))
+      {
+        seam.balls.push_back(at);
+        endNode = seamEndAtVertex(at, a, b);
+        break;
+      }
       const int face = at.generators[leaving];
+      const MedialBall3D crossing = at;
       crossOver(at, leaving, side);
-      if (!System.correct(at, Solve))
-        fail("3D MAT: the seam through ", describe(at), " could not cross from ", Generators[face].name(), " onto ",
+      // (The ball on the new generator is the same ball: Newton only polishes it.)
+      if (!System.correct(at, Solve) || (at.x - crossing.x).norm() > 1e-6 * Size)
+        fail("3D MAT: the seam through ", describe(crossing), " could not cross from ", Generators[face].name(), " onto ",
           Generators[at.generators[leaving]].name());
 #ifdef EXACTMAT_TRACE3D_DEBUG
       std::fprintf(stderr, "  crossed from %d to %s\n", face, describe(at).c_str());
@@ -920,6 +941,24 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   // Node balls as the seam's ends, so the polyline shares the node's point.
   seam.balls.back().x = Result.nodes[endNode].ball.x;
   seam.balls.back().r = Result.nodes[endNode].ball.r;
+  // A triplet leaving a degenerate node (many generators, merged touches) in a direction of
+  // no seam of its own is pulled by Newton onto a seam already traced between the same
+  // nodes: the same curve twice, kept once.
+  const MedialBall3D& middle = seam.balls[seam.balls.size() / 2];
+  for (const MAT3DSeam& other : Result.seams)
+  {
+    if (std::minmax(other.startNode, other.endNode) != std::minmax(seam.startNode, seam.endNode))
+      continue;
+    double nearest = Unbounded;
+    for (size_t i = 0; i + 1 < other.balls.size(); ++i)
+    {
+      const Vec3 a = other.balls[i].x, e = other.balls[i + 1].x - a;
+      const double s = e.squaredNorm() > 0.0 ? std::clamp((middle.x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      nearest = std::min(nearest, (a + s * e - middle.x).norm());
+    }
+    if (nearest <= 10.0 * Options.tolerance * Size)
+      return;
+  }
   Result.seams.push_back(std::move(seam));
   if (static_cast<int>(Result.seams.size()) > Options.maxSeams)
     fail("3D MAT: more than ", Options.maxSeams, " seams");
@@ -977,6 +1016,10 @@ void Tracer::reportProgress()
 
 void Tracer::startFrom(int node)
 {
+  // A seam's end on a rim starts nothing: its rim is traced with it, and its triplet's two
+  // merged touches make no seam.
+  if (Result.nodes[node].seamEnd)
+    return;
   const std::vector<int> faces = Result.nodes[node].ball.generators;
   const int k = static_cast<int>(faces.size());
   for (int a = 0; a < k; ++a)
