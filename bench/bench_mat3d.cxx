@@ -25,6 +25,23 @@ using namespace exactmat;
 
 namespace
 {
+// Every patch cut into k × k sub-patches (exact: the same solid, k² times the faces, smooth
+// edges between them): free-form scaling with the number of faces.
+std::vector<PatchPiece> subdivided(const std::vector<PatchPiece>& pieces, int k)
+{
+  std::vector<PatchPiece> out;
+  for (const PatchPiece& p : pieces)
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+      {
+        PatchPiece q;
+        q.patch = p.patch.subPatch(double(i) / k, double(i + 1) / k, double(j) / k, double(j + 1) / k);
+        q.entity = p.entity;
+        out.push_back(std::move(q));
+      }
+  return out;
+}
+
 double msSince(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -76,6 +93,18 @@ int main(int argc, char** argv)
   row("notched cube (reflex corner)", patchPieces(makeShape("notched-cube").surfaces), repeats);
   std::mt19937 stairs(9);
   row("random staircase 6 x 6 x 3", randomStaircase(stairs, 6, 3), repeats);
+
+  std::printf("\n## Scaling: the pillow with every face cut into k x k patches (free-form, 6k^2 faces)\n\n");
+  std::printf("| solid | faces | seams | junctions | points | tracing (ms) | verification (ms) | "
+              "verified error | touchpoint mismatches |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int k : { 1, 2, 4, 8 })
+  {
+    if (quick && k > 2)
+      break;
+    row("pillow, " + std::to_string(k) + " x " + std::to_string(k) + " patches a face",
+      subdivided(patchPieces(makeShape("pillow").surfaces), k), k >= 4 ? 1 : repeats);
+  }
 
   std::printf("\n## Scaling: random frustums over n-gons (3n faces)\n\n");
   std::printf("| solid | faces | seams | junctions | points | tracing (ms) | verification (ms) | "
