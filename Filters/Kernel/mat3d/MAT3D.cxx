@@ -239,6 +239,12 @@ int Tracer::contactCount(const MedialBall3D& ball) const
     points.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
   for (int f : Tree.candidatesWithin(ball.x, ball.r + Degenerate))
   {
+    // (A generator's own touch is counted; a curved face is searched only when the cheap
+    // Bernstein test says it comes that close.)
+    if (std::find(ball.generators.begin(), ball.generators.end(), f) != ball.generators.end())
+      continue;
+    if (!Generators[f].polygon() && !patchComesWithin(B.faces()[f].patch, ball.x, ball.r + Degenerate))
+      continue;
     const Vec3 foot = Generators[f].nearestPoint(ball.x);
     if ((foot - ball.x).norm() > ball.r + Degenerate)
       continue;

@@ -399,6 +399,12 @@ double BernsteinPoly2::maxAbs() const
 BernsteinPoly2 operator*(const BernsteinPoly2& a, const BernsteinPoly2& b)
 {
   BernsteinPoly2 p(a.nu + b.nu, a.nv + b.nv);
+  // In the scaled basis C(n,i)·B_i the product is a plain convolution: scale b once, so the
+  // inner loop is a multiply-add (this product is the hot path of the 3D emptiness test).
+  BernsteinPoly2 scaled = b;
+  for (int k = 0; k <= b.nu; ++k)
+    for (int l = 0; l <= b.nv; ++l)
+      scaled.at(k, l) *= binomial(b.nu, k) * binomial(b.nv, l);
   for (int i = 0; i <= a.nu; ++i)
   {
     for (int j = 0; j <= a.nv; ++j)
@@ -408,7 +414,7 @@ BernsteinPoly2 operator*(const BernsteinPoly2& a, const BernsteinPoly2& b)
       {
         for (int l = 0; l <= b.nv; ++l)
         {
-          p.at(i + k, j + l) += ca * binomial(b.nu, k) * binomial(b.nv, l) * b.at(k, l);
+          p.at(i + k, j + l) += ca * scaled.at(k, l);
         }
       }
     }
