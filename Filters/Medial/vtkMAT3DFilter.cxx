@@ -52,6 +52,7 @@ int vtkMAT3DFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSheets = this->NumberOfVerifiedPoints = 0;
   this->NumberOfSkeletalEdges = 0;
+  this->NumberOfTopologyProblems = 0;
   this->NumberOfTouchpointMismatches = 0;
   this->MaximumVerifiedError = this->TracingSeconds = this->VerificationSeconds = 0.0;
   this->VerificationPassed = true;
@@ -136,6 +137,16 @@ int vtkMAT3DFilter::RequestData(
       this->MaximumVerifiedError = v.maxDistanceError;
       this->NumberOfTouchpointMismatches = v.contactMismatches;
       outcome = exactmat::outcomeOf(v, this->VerificationTolerance, complex, frame);
+      // The seam graph's own check (seams per junction), which the points' check cannot see.
+      const std::vector<std::string> topology =
+        mat.topologyProblems([&frame](const exactmat::Vec3& x) { return frame.toUser(x); });
+      if (!topology.empty())
+      {
+        outcome.passed = false;
+        outcome.report += std::string(outcome.report.empty() ? "" : "; ") + std::to_string(topology.size()) +
+          " node(s) of the seam graph with the wrong number of seams (first: " + topology.front() + ")";
+      }
+      this->NumberOfTopologyProblems = static_cast<int>(topology.size());
       this->VerificationPassed = outcome.passed;
       if (!outcome.passed)
         vtkWarningMacro(<< "verification failed: " << outcome.report);
@@ -174,6 +185,7 @@ void vtkMAT3DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
   os << indent << "NumberOfSeams: " << this->NumberOfSeams << "\n";
   os << indent << "NumberOfSkeletalEdges: " << this->NumberOfSkeletalEdges << "\n";
+  os << indent << "NumberOfTopologyProblems: " << this->NumberOfTopologyProblems << "\n";
   os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
   os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

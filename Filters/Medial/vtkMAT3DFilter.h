@@ -95,6 +95,9 @@ public:
   vtkGetMacro(NumberOfSeams, int);
   /// Rims: skeletal edges where a sheet of two reflex edges closes at their common corner.
   vtkGetMacro(NumberOfSkeletalEdges, int);
+  /// Nodes of the seam graph with the wrong number of seams (a junction of four touchpoints
+  /// meets four): the graph's own check, part of the verification (0 when it passes).
+  vtkGetMacro(NumberOfTopologyProblems, int);
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
   vtkGetMacro(MaximumVerifiedError, double);
@@ -121,6 +124,7 @@ protected:
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
   int NumberOfSkeletalEdges = 0;
+  int NumberOfTopologyProblems = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
   double MaximumVerifiedError = 0.0;

@@ -75,10 +75,11 @@ std::vector<PatchPiece> moved(std::vector<PatchPiece> pieces, const Eigen::Matri
 }
 
 void expectClosedSheets(const Traced& t, const std::string& what);
+std::vector<std::string> topologyProblems(const Traced& t);
 
 // Every point checked against the exact boundary (distance = radius, touchpoint count);
 // every seam joins two nodes; one connected graph.
-void expectVerified(const Traced& t, const std::string& what)
+void expectPointsVerified(const Traced& t, const std::string& what)
 {
   const PatchBoundary boundary(*t.boundary);
   const MedialComplex c = t.mat.complex();
@@ -105,6 +106,21 @@ void expectVerified(const Traced& t, const std::string& what)
     components += root(static_cast<int>(i)) == static_cast<int>(i);
   EXPECT_EQ(components, 1) << what;
   expectClosedSheets(t, what);
+}
+
+// The seam graph's own check: every junction of four touchpoints meets four seams, every
+// seam end on a rim one seam and one rim.
+std::vector<std::string> topologyProblems(const Traced& t)
+{
+  return t.mat.topologyProblems([&t](const Vec3& x) { return t.boundary->userFrame().toUser(x); });
+}
+
+// The points verified and the seam graph consistent.
+void expectVerified(const Traced& t, const std::string& what)
+{
+  expectPointsVerified(t, what);
+  const std::vector<std::string> problems = topologyProblems(t);
+  EXPECT_TRUE(problems.empty()) << what << ": " << (problems.empty() ? "" : problems.front());
 }
 
 // Every sheet's border (its seams and convex edges) is closed: each node on it is met an even
@@ -485,10 +501,12 @@ TEST(MAT3D, SteppedBlockHasRimsAtItsInnerCorners)
 // meet (seams ending on the rim at such a corner), degenerate seams (square tubes' axes)
 // and junctions where a crossing and a fourth contact coincide. Every point verified, one
 // connected graph. (A longer run: the driver in bench/, 200 staircases up to 7 × 7.)
+constexpr int MinimumCleanStaircases = 21; // of 24 (measured; see the comment below)
+
 TEST(MAT3D, RandomStaircasesAreVerified)
 {
   std::mt19937 rng(1);
-  int rims = 0;
+  int rims = 0, clean = 0;
   for (int k = 0; k < 24; ++k)
   {
     const int n = 2 + k % 4, height = 2 + (k / 4) % 2;
@@ -506,9 +524,14 @@ TEST(MAT3D, RandomStaircasesAreVerified)
     }
     EXPECT_GT(t.boundary->countEdges(VertexKind::Reflex), 0) << what;
     rims += static_cast<int>(t.mat.skeletalEdges.size());
-    expectVerified(t, what);
+    expectPointsVerified(t, what);
+    clean += topologyProblems(t).empty();
   }
   EXPECT_GT(rims, 0) << "some staircase has a seam ending on a rim";
+  // Known limit (README): at some of the grid's exact coincidences a seam is missed or
+  // doubled; the graph check flags those solids (the filter's verification fails). The
+  // rest must stay right.
+  EXPECT_GE(clean, MinimumCleanStaircases) << "staircases with a consistent seam graph";
 }
 
 // Cross-check with the 2.5D construction: a polygonal profile extruded, its faces as the

@@ -1179,6 +1179,35 @@ MAT3D Tracer::run()
 }
 } // namespace
 
+std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const Vec3&)>& toUser) const
+{
+  std::vector<int> degree(nodes.size(), 0);
+  for (const MAT3DSeam& s : seams)
+  {
+    ++degree[s.startNode];
+    ++degree[s.endNode];
+  }
+  for (const MAT3DSkeletalEdge& r : skeletalEdges)
+  {
+    ++degree[r.startNode];
+    ++degree[r.endNode];
+  }
+  std::vector<std::string> problems;
+  for (size_t n = 0; n < nodes.size(); ++n)
+  {
+    const MAT3DNode& node = nodes[n];
+    // A junction of four touchpoints is where the four seams of its triplets meet; a seam's
+    // end on a rim joins one seam and one rim; a vertex starts at least one.
+    const int expected = node.vertex >= 0 ? -1 : node.seamEnd ? 2 : node.touchpoints == 4 ? 4 : -1;
+    const bool wrong = node.vertex >= 0 ? degree[n] < 1 : expected > 0 ? degree[n] != expected : degree[n] < 4;
+    if (wrong)
+      problems.push_back(std::string(node.vertex >= 0 ? "the vertex" : node.seamEnd ? "the seam end" : "the junction") +
+        " at " + format(toUser(node.ball.x)) + " meets " + std::to_string(degree[n]) + " seams or rims" +
+        (expected > 0 ? ", " + std::to_string(expected) + " expected" : ""));
+  }
+  return problems;
+}
+
 int MAT3D::junctionCount() const
 {
   return static_cast<int>(

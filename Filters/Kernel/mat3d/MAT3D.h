@@ -32,6 +32,7 @@
 
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace exactmat
@@ -115,6 +116,11 @@ struct MAT3D
   std::vector<MAT3DSheet> sheets;
 
   int junctionCount() const;
+  /// The graph's own check, independent of the points' verification: a junction of four
+  /// touchpoints meets exactly four seams, a seam end on a rim one seam and one rim, a
+  /// degenerate junction at least four, a vertex at least one. One sentence per node that
+  /// does not (positions through `toUser`); empty when all do.
+  std::vector<std::string> topologyProblems(const std::function<Vec3(const Vec3&)>& toUser) const;
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
   /// (sharing the node points), governors = the seam's start triplet of generators; a
   /// SkeletalEdge polyline per skeletal edge (governors: the merged pair).
