@@ -103,8 +103,8 @@ private:
   std::vector<int> facesOutside(const MedialBall3D& ball, double radius) const;
   bool empty(const MedialBall3D& ball) const;
   int reentering(const MedialBall3D& ball) const;
-  int addNode(const MedialBall3D& ball, int vertex);
-  int findNode(const Vec3& x) const;
+  int addNode(const MedialBall3D& ball, int vertex, double merge = 0.0);
+  int findNode(const Vec3& x, double merge = 0.0) const;
   void startFrom(int node);
   bool outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
   void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
@@ -417,17 +417,28 @@ int Tracer::reentering(const MedialBall3D& ball) const
   return -1;
 }
 
-int Tracer::findNode(const Vec3& x) const
+int Tracer::findNode(const Vec3& x, double merge) const
 {
+  // The nearest node within the merge distance (NodeMerge unless a caller knows its ball is
+  // located less precisely).
+  const double within = std::max(merge, NodeMerge);
+  int best = -1;
+  double nearest = Unbounded;
   for (size_t n = 0; n < Result.nodes.size(); ++n)
-    if ((Result.nodes[n].ball.x - x).norm() <= NodeMerge)
-      return static_cast<int>(n);
-  return -1;
+  {
+    const double d = (Result.nodes[n].ball.x - x).norm();
+    if (d <= within && d < nearest)
+    {
+      nearest = d;
+      best = static_cast<int>(n);
+    }
+  }
+  return best;
 }
 
-int Tracer::addNode(const MedialBall3D& ball, int vertex)
+int Tracer::addNode(const MedialBall3D& ball, int vertex, double merge)
 {
-  const int found = findNode(ball.x);
+  const int found = findNode(ball.x, merge);
   if (found >= 0)
   {
     // The same junction reached again: keep every face either arrival saw.
@@ -914,7 +925,10 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       polishJunction(last);
       if (last.size() < 4)
         fail("3D MAT: the degenerate seam through ", describe(ball), " loses a touchpoint where no junction is found");
-      endNode = addNode(last, -1);
+      // A contact that leaves tangentially is located only to about the square root of the
+      // rounding (and the degenerate system does not sharpen it): the junction reached from
+      // elsewhere is the same one.
+      endNode = addNode(last, -1, 1e-5 * Size);
       seam.balls.push_back(last);
       break;
     }
