@@ -501,7 +501,7 @@ TEST(MAT3D, SteppedBlockHasRimsAtItsInnerCorners)
 // meet (seams ending on the rim at such a corner), degenerate seams (square tubes' axes)
 // and junctions where a crossing and a fourth contact coincide. Every point verified, one
 // connected graph. (A longer run: the driver in bench/, 200 staircases up to 7 × 7.)
-constexpr int MinimumCleanStaircases = 21; // of 24 (measured; see the comment below)
+constexpr int MinimumCleanStaircases = 23; // of 24 (measured; see the comment below)
 
 TEST(MAT3D, RandomStaircasesAreVerified)
 {

@@ -427,7 +427,7 @@ int Tracer::findNode(const Vec3& x, double merge) const
   for (size_t n = 0; n < Result.nodes.size(); ++n)
   {
     const double d = (Result.nodes[n].ball.x - x).norm();
-    if (d <= within && d < nearest)
+    if (d <= (Result.nodes[n].imprecise ? std::max(within, 1e-5 * Size) : within) && d < nearest)
     {
       nearest = d;
       best = static_cast<int>(n);
@@ -441,8 +441,23 @@ int Tracer::addNode(const MedialBall3D& ball, int vertex, double merge)
   const int found = findNode(ball.x, merge);
   if (found >= 0)
   {
-    // The same junction reached again: keep every face either arrival saw.
-    MedialBall3D& b = Result.nodes[found].ball;
+    // The same junction reached again: keep every face either arrival saw (and, where the
+    // node was located imprecisely, the precisely polished ball of this arrival).
+    MAT3DNode& node = Result.nodes[found];
+    MedialBall3D& b = node.ball;
+    if (node.imprecise && merge <= 0.0 && vertex < 0)
+    {
+      MedialBall3D precise = ball;
+      for (int i = 0; i < b.size(); ++i)
+        if (std::find(precise.generators.begin(), precise.generators.end(), b.generators[i]) == precise.generators.end())
+        {
+          precise.generators.push_back(b.generators[i]);
+          precise.q.push_back(Generators[b.generators[i]].parameterOf(Generators[b.generators[i]].nearestPoint(ball.x)));
+        }
+      b = precise;
+      node.imprecise = false;
+      return found;
+    }
     for (int i = 0; i < ball.size(); ++i)
       if (std::find(b.generators.begin(), b.generators.end(), ball.generators[i]) == b.generators.end())
       {
@@ -841,7 +856,13 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       if (!empty(at) || touching.size() > 3)
       {
         const MedialBall3D j = touching.size() > 3 ? touching : junctionSinceCheck(ball, t, lo);
-        endNode = addNode(j, -1);
+        // Along a degenerate seam the ball's place is not pinned by its own equations: the
+        // junction is known only as well as the contact count locates it.
+        const bool loose = seam.touchpoints > 3;
+        const size_t known = Result.nodes.size();
+        endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
+        if (loose && Result.nodes.size() > known)
+          Result.nodes[endNode].imprecise = true;
         seam.balls.push_back(j);
         break;
       }
@@ -898,7 +919,12 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     if (check && !empty(next))
     {
       const MedialBall3D j = junctionSinceCheck(ball, t, h);
-      endNode = addNode(j, -1);
+      // (As at a crossing: a degenerate seam's junction is located loosely.)
+      const bool loose = seam.touchpoints > 3;
+      const size_t known = Result.nodes.size();
+      endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
+      if (loose && Result.nodes.size() > known)
+        Result.nodes[endNode].imprecise = true;
       seam.balls.push_back(j);
       break;
     }
@@ -928,7 +954,10 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       // A contact that leaves tangentially is located only to about the square root of the
       // rounding (and the degenerate system does not sharpen it): the junction reached from
       // elsewhere is the same one.
+      const size_t before = Result.nodes.size();
       endNode = addNode(last, -1, 1e-5 * Size);
+      if (Result.nodes.size() > before)
+        Result.nodes[endNode].imprecise = true;
       seam.balls.push_back(last);
       break;
     }
@@ -1196,10 +1225,13 @@ MAT3D Tracer::run()
 std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const Vec3&)>& toUser) const
 {
   std::vector<int> degree(nodes.size(), 0);
+  std::vector<bool> degenerate(nodes.size(), false); // a degenerate seam (> 3 touches) ends here
   for (const MAT3DSeam& s : seams)
   {
     ++degree[s.startNode];
     ++degree[s.endNode];
+    if (s.touchpoints > 3)
+      degenerate[s.startNode] = degenerate[s.endNode] = true;
   }
   for (const MAT3DSkeletalEdge& r : skeletalEdges)
   {
@@ -1210,10 +1242,14 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
   for (size_t n = 0; n < nodes.size(); ++n)
   {
     const MAT3DNode& node = nodes[n];
-    // A junction of four touchpoints is where the four seams of its triplets meet; a seam's
-    // end on a rim joins one seam and one rim; a vertex starts at least one.
-    const int expected = node.vertex >= 0 ? -1 : node.seamEnd ? 2 : node.touchpoints == 4 ? 4 : -1;
-    const bool wrong = node.vertex >= 0 ? degree[n] < 1 : expected > 0 ? degree[n] != expected : degree[n] < 4;
+    // A junction of four touchpoints is where the four seams of its triplets meet (unless a
+    // degenerate seam, along which all four keep touching, stands for several of them: then
+    // at least two); a seam's end on a rim joins one seam and one rim; a vertex starts at
+    // least one.
+    const int expected = node.vertex >= 0 || degenerate[n] ? -1 : node.seamEnd ? 2 : node.touchpoints == 4 ? 4 : -1;
+    const bool wrong = node.vertex >= 0 ? degree[n] < 1
+      : expected > 0                    ? degree[n] != expected
+                                        : degree[n] < (degenerate[n] ? 2 : 4);
     if (wrong)
       problems.push_back(std::string(node.vertex >= 0 ? "the vertex" : node.seamEnd ? "the seam end" : "the junction") +
         " at " + format(toUser(node.ball.x)) + " meets " + std::to_string(degree[n]) + " seams or rims" +

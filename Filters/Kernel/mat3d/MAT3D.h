@@ -61,6 +61,9 @@ struct MAT3DNode
   /// A seam's end where two of its touchpoints merge at a vertex of the solid: the seam
   /// meets the skeletal edge (rim) of the sheet between those two generators there.
   bool seamEnd = false;
+  /// Located only to about the square root of the rounding (where a degenerate seam loses a
+  /// contact tangentially): a junction reached later within 1e-5 of the size is this one.
+  bool imprecise = false;
   int touchpoints = 0;   ///< distinct points the ball touches (a point touched by two faces once)
   Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
 };
