@@ -187,21 +187,28 @@ class ExactmatCLI(unittest.TestCase):
             self.assertIn("no surface cells", r.stderr)
 
     def test_input_alone_picks_2d_or_3d(self):
-        # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT.
-        from exactmat import vtkNURBSSource
+        # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT. The solid: the box
+        # 4 x 3 x 2 as six planar VTK_QUAD faces (plain VTK, no ExactMAT module needed).
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import VTK_QUAD, vtkUnstructuredGrid
         from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
         with tempfile.TemporaryDirectory() as tmp:
-            source = vtkNURBSSource()
-            source.SetShapeName("stepped-block")
+            points = vtkPoints()
+            for i in range(8):
+                points.InsertNextPoint(2.0 if i & 1 else -2.0, 1.5 if i & 2 else -1.5, 1.0 if i & 4 else -1.0)
+            grid = vtkUnstructuredGrid()
+            grid.SetPoints(points)
+            for quad in ((0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)):
+                grid.InsertNextCell(VTK_QUAD, 4, quad)
             writer = vtkXMLUnstructuredGridWriter()
-            writer.SetInputConnection(source.GetOutputPort())
-            writer.SetFileName(os.path.join(tmp, "block.vtu"))
+            writer.SetInputData(grid)
+            writer.SetFileName(os.path.join(tmp, "box.vtu"))
             self.assertEqual(writer.Write(), 1)
-            r = run("block.vtu", cwd=tmp)
+            r = run("box.vtu", cwd=tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("3D medial axis", r.stdout)
-            self.assertEqual(summary_value(r.stdout, "junctions"), 12)
-            self.assertEqual(summary_value(r.stdout, "skeletal edges"), 4)
+            self.assertEqual(summary_value(r.stdout, "junctions"), 4)
+            self.assertEqual(summary_value(r.stdout, "seams"), 12)
             self.assertTrue(os.path.exists(os.path.join(tmp, "exactmat-3d.vtp")))
             r = run(os.path.join(DATA, "two-loops.json"), cwd=tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
