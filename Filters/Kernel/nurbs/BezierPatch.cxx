@@ -34,6 +34,41 @@ BezierPatch BezierPatch::fromTriangle(const TriangleNet& tri)
   return BezierPatch(n, n, std::move(net));
 }
 
+BezierPatch BezierPatch::inStandardForm() const
+{
+  if (P < 1 || Q < 1)
+  {
+    return *this;
+  }
+  const double w00 = homogeneousPoint(0, 0).w(), wp0 = homogeneousPoint(P, 0).w();
+  const double w0q = homogeneousPoint(0, Q).w();
+  const double a = std::pow(w00 / wp0, 1.0 / P), b = std::pow(w00 / w0q, 1.0 / Q);
+  Vec4List net(Net.size());
+  double ai = 1.0 / w00;
+  for (int i = 0; i <= P; ++i)
+  {
+    double scale = ai;
+    for (int j = 0; j <= Q; ++j)
+    {
+      net[i * (Q + 1) + j] = Net[i * (Q + 1) + j] * scale;
+      scale *= b;
+    }
+    ai *= a;
+  }
+  BezierPatch out(P, Q, std::move(net));
+  // Corner weights exactly 1 where they are 1 up to rounding, points unchanged.
+  for (const auto& [i, j] : { std::pair{ 0, 0 }, { P, 0 }, { 0, Q }, { P, Q } })
+  {
+    Vec4& h = out.Net[i * (Q + 1) + j];
+    if (std::abs(h.w() - 1.0) <= 1e-13)
+    {
+      h.head<3>() = euclidean(homogeneousPoint(i, j));
+      h.w() = 1.0;
+    }
+  }
+  return out;
+}
+
 Vec3 BezierPatch::evaluate(double u, double v) const
 {
   return derivatives(u, v).point;

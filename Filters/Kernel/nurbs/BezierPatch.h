@@ -50,6 +50,13 @@ public:
   /// parameterisation is singular (collapsed edges, corners where Su ∥ Sv).
   Vec3 normal(double u, double v) const;
 
+  /// The same patch re-parameterised (w_ij → s·w_ij·a^i·b^j, a rational re-parameterisation
+  /// in u and in v) so that the corner weights w_00, w_p0, w_0q are 1; so is w_pq when the
+  /// corner weights are those of a tensor product (w_00·w_pq = w_p0·w_0q: surfaces swept or
+  /// revolved from rational curves, spheres, tori), and then every side is in
+  /// BezierCurve::inStandardForm, so it agrees point for point with the standard form of the
+  /// same curve cut from a neighbouring face.
+  BezierPatch inStandardForm() const;
   /// The patch over [u0,u1]×[v0,v1], re-parameterised to [0,1]².
   BezierPatch subPatch(double u0, double u1, double v0, double v1) const;
   /// Boundary side s (0..3, see above) as a Bézier curve in counter-clockwise order.

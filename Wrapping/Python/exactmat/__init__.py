@@ -20,6 +20,7 @@ from vtkmodules.util.vtkConstants import VTK_STRING as _VTK_STRING
 
 from .ExactMATFiltersMedial import *  # noqa: F401,F403
 from .ExactMATIONURBS import *  # noqa: F401,F403
+from .ExactMATIOCAD import *  # noqa: F401,F403
 
 
 class ExactMATError(RuntimeError):
