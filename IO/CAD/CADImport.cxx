@@ -207,6 +207,12 @@ TopoDS_Shape readShape(const std::string& fileName, CADBoundary& out)
   }
   const std::string ext = lowerExtension(fileName);
   const QuietMessenger quiet;
+  // The unit OpenCASCADE converts lengths to is a process-wide setting: restore it after.
+  struct UnitSetting
+  {
+    std::string saved = Interface_Static::CVal("xstep.cascade.unit");
+    ~UnitSetting() { Interface_Static::SetCVal("xstep.cascade.unit", saved.c_str()); }
+  } unitSetting;
   TopoDS_Shape shape;
   if (ext == "step" || ext == "stp")
   {
@@ -1010,10 +1016,13 @@ void importPlanar(const TopoDS_Shape& shape, int part, CADBoundary& out)
 {
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+  // Faces in TopExp::MapShapes order: face N here is FaceId N of the solid read in 3D.
+  TopTools_IndexedMapOfShape faceMap;
+  TopExp::MapShapes(shape, TopAbs_FACE, faceMap);
   std::vector<TopoDS_Face> faces;
-  for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next())
+  for (int f = 1; f <= faceMap.Extent(); ++f)
   {
-    faces.push_back(TopoDS::Face(ex.Current()));
+    faces.push_back(TopoDS::Face(faceMap(f)));
   }
   TopoDS_Shape source = shape;
   if (!faces.empty())

@@ -35,6 +35,9 @@
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -69,6 +72,13 @@ using namespace exactmat;
 
 namespace
 {
+
+// OpenCASCADE's writers print statistics; the tests want only failures on the terminal.
+const bool QuietOpenCASCADE = [] {
+  for (Message_SequenceOfPrinters::Iterator it(Message::DefaultMessenger()->Printers()); it.More(); it.Next())
+    it.Value()->SetTraceLevel(Message_Fail);
+  return true;
+}();
 
 std::string output(const std::string& name)
 {
@@ -372,6 +382,23 @@ TEST(vtkCADBoundaryReader, SolidsAgreeWithOpenCASCADE)
   }
 }
 
+TEST(vtkCADBoundaryReader, LengthsStayInTheFilesUnit)
+{
+  // A 25.4 mm cube written in inches is read as a 1 inch cube, unit INCH.
+  Interface_Static::SetCVal("write.step.unit", "INCH");
+  writeStep(BRepPrimAPI_MakeBox(25.4, 25.4, 25.4).Shape(), output("cad-inch.step"));
+  Interface_Static::SetCVal("write.step.unit", "MM");
+  const Read r = readCAD(output("cad-inch.step"));
+  ASSERT_TRUE(r.errors.empty()) << r.errors;
+  EXPECT_EQ(r.unit, "INCH");
+  double b[6];
+  r.grid->GetBounds(b);
+  EXPECT_NEAR(b[1] - b[0], 1.0, 1e-12);
+  EXPECT_NEAR(b[5] - b[4], 1.0, 1e-12);
+  // Reading does not change OpenCASCADE's process-wide unit.
+  EXPECT_STREQ(Interface_Static::CVal("xstep.cascade.unit"), "MM");
+}
+
 TEST(vtkCADBoundaryReader, BoxMATIsTheCatalogueBoxMAT)
 {
   // The same 4 × 3 × 2 box from a STEP file and from vtkNURBSSource: the same junctions.
@@ -542,4 +569,31 @@ TEST(vtkCADBoundaryReader, BadFilesSayWhy)
   const Read missing = readCAD(output("cad-box.step"), 3, 4);
   EXPECT_NE(missing.errors.find("solid 4 asked for, but the file has 1 solid(s)"), std::string::npos)
     << missing.errors;
+}
+
+TEST(vtkCADBoundaryReader, PlanarFaceOfASolidIn2D)
+{
+  // The bracket (a plate with two round holes and rounded corners, written by OpenCASCADE):
+  // its top face read in 2D has the MAT of a domain with two holes.
+  const std::string file = std::string(EXACTMAT_TEST_DATA) + "/cad/bracket.step";
+  const Read solid = readCAD(file);
+  ASSERT_TRUE(solid.errors.empty()) << solid.errors;
+  EXPECT_TRUE(gridHasSurfaceCells(solid.grid));
+  vtkNew<vtkCADBoundaryReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->SetDimension(2);
+  reader->SetPartIndex(1);
+  vtkNew<vtkMAT2DFilter> mat;
+  mat->SetInputConnection(reader->GetOutputPort());
+  auto errors = ErrorRecorder::watch(mat);
+  mat->Update();
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  EXPECT_EQ(reader->GetNumberOfParts(), 12);
+  EXPECT_TRUE(mat->GetVerificationPassed());
+  EXPECT_EQ(mat->GetNumberOfBranchPoints(), 6);
+  // Two holes: two independent cycles (segments − branch points + 1 component).
+  EXPECT_EQ(mat->GetNumberOfSegments() - mat->GetNumberOfBranchPoints() + 1, 6);
+  // A cylindrical face is no planar domain: named.
+  const Read curved = readCAD(file, 2, 2);
+  EXPECT_NE(curved.errors.find("face 2 is a cylinder, not planar"), std::string::npos) << curved.errors;
 }

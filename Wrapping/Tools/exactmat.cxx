@@ -7,10 +7,12 @@
 //   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]] [--max-step H] [--png OUT.png]
 //   exactmat shapes
 //
-// INPUT is a .vtu of (rational) Bézier cells or ExactMAT's .json NURBS format; without
-// one, the bundled catalogue shape plate-with-holes (or --shape NAME) is used.
+// INPUT is a .vtu of (rational) Bézier cells, ExactMAT's .json NURBS format, or a STEP /
+// IGES part (read exactly); without one, the bundled catalogue shape plate-with-holes (or
+// --shape NAME) is used.
 #include "MATPicture.h"
 
+#include "vtkCADBoundaryReader.h"
 #include "vtkExactMATArrayNames.h"
 #include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
@@ -71,8 +73,11 @@ const char* Usage = R"(usage:
               [--max-step H] [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat shapes          list the bundled shapes
 
-  INPUT          boundary curves: a .vtu of Bezier cells, or ExactMAT .json NURBS;
+  INPUT          boundary curves: a .vtu of Bezier cells, ExactMAT .json NURBS, or a
+                 planar face or wires of a .step/.stp/.iges/.igs file (read exactly);
                  default: the bundled shape plate-with-holes (or --shape NAME)
+  --face N       which planar face of a STEP/IGES INPUT (default 0, file order)
+  --part N       which solid (3d) or planar face (2d) of a STEP/IGES INPUT (default 0)
   -o OUT.vtp     the MAT as VTK XML polydata (default: exactmat-2d.vtp)
   --tolerance T  adaptive steps: polyline within T x domain size of the MAT (default 1e-4)
   --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
@@ -95,8 +100,9 @@ const char* Usage = R"(usage:
   OUT.vtp defaults to exactmat-extrude.vtp / exactmat-revolve.vtp
 
   3d: the seams and junctions of the MAT of a solid bounded by exact faces (SOLID: a .vtu
-  of Bezier quadrilaterals/triangles or planar quads/triangles, or ExactMAT .json
-  surfaces; default: the bundled free-form shape pillow, or --shape NAME)
+  of Bezier quadrilaterals/triangles or planar quads/triangles, ExactMAT .json
+  surfaces, or a solid of a .step/.stp/.iges/.igs file; default: the bundled free-form
+  shape pillow, or --shape NAME)
   --tolerance T  seam polylines within T x solid size of the seams (default 1e-4)
   --max-step H   longest step along a seam, fraction of the size (default 0.05)
   --step S       fixed steps of S x solid size along the seams, as in the thesis (junction
@@ -110,6 +116,7 @@ struct Arguments
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
   bool shapeGiven = false, outputGiven = false;
+  int part = 0; ///< solid or face of a STEP/IGES input
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
 
@@ -162,7 +169,8 @@ Arguments parse(int argc, char* argv[])
     std::exit(0);
   }
   // `exactmat INPUT [options]`: 2d or 3d by the input's cells (decided in main).
-  if (endsWith(a.command, ".vtu") || endsWith(a.command, ".json"))
+  if (endsWith(a.command, ".vtu") || endsWith(a.command, ".json") ||
+    vtkCADBoundaryReader::CanReadFile(a.command.c_str()))
   {
     a.input = a.command;
     a.command = "auto";
@@ -192,6 +200,15 @@ Arguments parse(int argc, char* argv[])
     {
       a.shape = value();
       a.shapeGiven = true;
+    }
+    else if (arg == "--face" || arg == "--part")
+    {
+      const char* text = value();
+      char* end = nullptr;
+      const long n = std::strtol(text, &end, 10);
+      if (!text[0] || *end || n < 0 || n > 1000000000)
+        usageError(arg + " needs an index >= 0, got '" + text + "'");
+      a.part = static_cast<int>(n);
     }
     else if (arg == "--max-step")
       a.maxStep = number(arg, value());
@@ -371,6 +388,20 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     reader = r;
     label = a.input;
   }
+  else if (vtkCADBoundaryReader::CanReadFile(a.input.c_str()))
+  {
+    auto r = vtkSmartPointer<vtkCADBoundaryReader>::New();
+    r->SetFileName(a.input.c_str());
+    r->SetDimension(a.command == "3d" ? 3 : a.command == "auto" ? 0 : 2);
+    r->SetPartIndex(a.part);
+    r->AddObserver(vtkCommand::ErrorEvent, errors);
+    r->Update();
+    if (errors->Failed)
+      return nullptr;
+    label = a.input + (a.part > 0 ? " (part " + std::to_string(a.part) + ")" : "") + ", unit " +
+      (r->GetLengthUnit() ? r->GetLengthUnit() : "?");
+    return vtkSmartPointer<vtkUnstructuredGrid>(r->GetOutput());
+  }
   else if (endsWith(a.input, ".vtu"))
   {
     const std::string why = whyNotVTU(a.input);
@@ -397,7 +428,8 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
   }
   else
   {
-    std::cerr << "exactmat: error: '" << a.input << "' is neither .vtu nor .json\n";
+    std::cerr << "exactmat: error: '" << a.input
+              << "' is none of .vtu, .json, .step/.stp, .iges/.igs\n";
     return nullptr;
   }
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
@@ -704,7 +736,7 @@ int main(int argc, char* argv[])
   if (a.command != "2d" && a.command != "3d" && a.command != "extrude" && a.command != "revolve" &&
     a.command != "auto")
     usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, shapes; or give " +
-      "a .vtu or .json INPUT first)");
+      "a .vtu, .json, .step or .iges INPUT first)");
   Arguments chosen = a;
   if (a.command == "auto")
   {
