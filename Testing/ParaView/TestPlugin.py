@@ -5,11 +5,12 @@ and saves a screenshot (run under xvfb-run).
     pvbatch TestPlugin.py <plugin.so> [screenshot.png]
 """
 import math
+import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, LoadPlugin, Render, ResetCamera,
-                             SaveScreenshot, Show)
+from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, GetScalarBar, LoadPlugin, OpenDataFile, Render,
+                             ResetCamera, SaveScreenshot, Show)
 
 plugin = sys.argv[1]
 png = sys.argv[2] if len(sys.argv) > 2 else None
@@ -73,6 +74,14 @@ mat3 = MAT3DFilter(Input=source)  # noqa: F821
 mat3.UpdatePipeline()
 seams = servermanager.Fetch(mat3)
 assert seams.GetNumberOfVerts() == 1 and seams.GetNumberOfLines() == 8, (seams.GetNumberOfVerts(), seams.GetNumberOfLines())
+
+# ParaView opens an IGES part with the plugin's reader: exact planar faces, the 3D MAT.
+part = OpenDataFile(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data", "cad", "l-prism.igs"))
+assert part is not None and part.GetXMLName() == "CADBoundaryReader", part
+partMAT = MAT3DFilter(Input=part)  # noqa: F821
+partMAT.UpdatePipeline()
+assert servermanager.Fetch(partMAT).GetNumberOfVerts() == 5
+
 source.Shape = "plate-with-holes"
 source.UpdatePipeline()
 

@@ -13,7 +13,8 @@ from vtkmodules.vtkCommonDataModel import vtkGenericCell
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
 
 import exactmat
-from exactmat import vtkMAT25DFilter, vtkMAT2DFilter, vtkMAT3DFilter, vtkNURBSReader, vtkNURBSSource, vtkNURBSWriter
+from exactmat import (vtkCADBoundaryReader, vtkMAT25DFilter, vtkMAT2DFilter, vtkMAT3DFilter, vtkNURBSReader,
+                      vtkNURBSSource, vtkNURBSWriter)
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 GEOMETRY_TOLERANCE = 1e-12
@@ -333,6 +334,33 @@ class PythonPackage(unittest.TestCase):
 
     def test_mat3d_defaults_equal_the_paraview_xml(self):
         self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 7)
+
+    def test_step_solid_through_the_3d_filter(self):
+        # The L prism written by OpenCASCADE as IGES: exact planar faces, the 3D MAT verified.
+        reader = vtkCADBoundaryReader()
+        reader.SetFileName(os.path.join(SOURCE_DIR, "Testing", "Data", "cad", "l-prism.igs"))
+        mat = vtkMAT3DFilter()
+        mat.SetInputConnection(reader.GetOutputPort())
+        errors = exactmat.ErrorObserver()
+        errors.watch(reader, mat)
+        mat.Update()
+        errors.check()
+        self.assertEqual(reader.GetLengthUnit(), "MM")
+        self.assertTrue(mat.GetVerificationPassed())
+        self.assertEqual(mat.GetNumberOfJunctions(), 5)
+        face_ids = vtk_to_numpy(reader.GetOutput().GetCellData().GetArray("FaceId"))
+        self.assertEqual(len(np.unique(face_ids)), 8)  # the prism's 8 faces, as in the file
+        # A missing file is an exception that names it.
+        bad = vtkCADBoundaryReader()
+        bad.SetFileName("no-such-part.step")
+        errors = exactmat.ErrorObserver()
+        errors.watch(bad)
+        bad.Update()
+        with self.assertRaisesRegex(exactmat.ExactMATError, r"no-such-part.step: cannot open"):
+            errors.check()
+
+    def test_cad_reader_defaults_equal_the_paraview_xml(self):
+        self.check_xml_defaults("CADBoundaryReader.xml", "CADBoundaryReader", vtkCADBoundaryReader(), 2)
 
     def test_defaults_equal_the_paraview_xml(self):
         proxy = self.check_xml_defaults("NURBSSource.xml", "NURBSSource", vtkNURBSSource(), 13)
