@@ -1,4 +1,5 @@
 #include "CADImport.h"
+#include "PlanarTriangulation.h"
 
 #include "common/InputError.h"
 #include "nurbs/BezierExtraction.h"
@@ -726,9 +727,7 @@ private:
         // Linear triangles over the polygon of the loops' vertices and the caps' apexes;
         // a Bézier triangle A, B, apex for each curved piece A→B (side s = 0 the piece).
         const PlanarLoops loops = planarLoops(t);
-        CADPolygon polygon;
-        polygon.face = t.face;
-        polygon.normal = t.normal;
+        std::vector<Vec3List> polygon;
         for (const auto& loop : loops.loops)
         {
           Vec3List points;
@@ -746,11 +745,59 @@ private:
               out.triangles.push_back({ capTriangle(piece), t.face });
             }
           }
-          polygon.loops.push_back(std::move(points));
+          polygon.push_back(std::move(points));
         }
-        out.polygons.push_back(std::move(polygon));
+        emitPolygon(polygon, t, out);
         break;
       }
+    }
+  }
+
+  // A planar polygon (holes allowed) as linear triangles on its own vertices, so its
+  // segments stay whole and conform; a convex quadrilateral as one bilinear patch.
+  void emitPolygon(const std::vector<Vec3List>& loops, const FaceTiling& t, CADBoundary& out)
+  {
+    auto point = [](const Vec3& p) { return Vec4(p.x(), p.y(), p.z(), 1.0); };
+    if (loops.size() == 1 && loops[0].size() == 4)
+    {
+      const Vec3List& q = loops[0];
+      bool convex = true;
+      for (int k = 0; k < 4; ++k)
+      {
+        const Vec3 a = q[(k + 1) % 4] - q[k], b = q[(k + 2) % 4] - q[(k + 1) % 4];
+        convex &= std::abs(a.cross(b).dot(t.normal)) > 1e-9 * a.norm() * b.norm() &&
+          (a.cross(b).dot(t.normal) > 0) == ((q[1] - q[0]).cross(q[2] - q[1]).dot(t.normal) > 0);
+      }
+      if (convex)
+      {
+        Vec4List net{ point(q[0]), point(q[3]), point(q[1]), point(q[2]) };
+        out.patches.push_back({ BezierPatch(1, 1, std::move(net)), t.face, 0.0, 1.0, 0.0, 1.0 });
+        return;
+      }
+    }
+    Vec3List points;
+    for (const Vec3List& loop : loops)
+    {
+      points.insert(points.end(), loop.begin(), loop.end());
+    }
+    std::vector<std::array<int, 3>> triangles;
+    try
+    {
+      triangles = triangulatePlanarLoops(loops, t.normal);
+    }
+    catch (const InputError& e)
+    {
+      fail(faceName(t.face), ": ", e.what());
+    }
+    for (const auto& tri : triangles)
+    {
+      TriangleNet net;
+      net.degree = 1;
+      net.points.resize(3);
+      net.points[TriangleNet::index(1, 0, 0)] = point(points[tri[0]]);
+      net.points[TriangleNet::index(1, 0, 1)] = point(points[tri[1]]);
+      net.points[TriangleNet::index(1, 1, 0)] = point(points[tri[2]]);
+      out.triangles.push_back({ std::move(net), t.face });
     }
   }
 

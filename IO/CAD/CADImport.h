@@ -18,8 +18,11 @@
  * - faces with natural bounds (every edge an iso-parameter line on the border of the
  *   face's parameter rectangle, a seam, or a pole): the surface's Bézier patches, cut at the
  *   split points by exact knot insertion;
- * - planar faces bounded by straight edges (holes allowed): a polygon, triangulated by the
- *   caller without new vertices (linear triangles are exact);
+ * - planar faces bounded by straight and curved edges (holes allowed): a rational Bézier
+ *   triangle (a cap) between each curved piece and an apex on the material side, and linear
+ *   triangles over the polygon of the straight pieces and the caps' apexes (CGAL's
+ *   constrained triangulation, no new vertices); curved pieces are cut until each cap holds
+ *   its curve and no cap meets another part of the face;
  * - planar discs bounded by one closed circle or ellipse: rational quadratic Bézier
  *   triangles (sectors) from the conic's centre, one per piece of the rim.
  * Any other trimmed face is refused with an error naming it.
@@ -40,15 +43,6 @@ struct CADImportOptions
 {
   int dimension = 0; ///< 0: a solid when the file has one (or its faces close up), else 2D
   int part = 0;      ///< which solid (3D) or planar face (2D), in file order
-};
-
-/// A planar face bounded by straight edges, for the caller to triangulate without adding
-/// vertices: its loops (outer first) as closed point sequences, and its outward normal.
-struct CADPolygon
-{
-  std::vector<Vec3List> loops;
-  Vec3 normal = Vec3::UnitZ();
-  int face = -1;
 };
 
 struct CADBoundary
@@ -74,7 +68,6 @@ struct CADBoundary
   std::vector<Curve> curves;
   std::vector<Patch> patches;
   std::vector<Triangle> triangles;
-  std::vector<CADPolygon> polygons;
 
   std::string format;     ///< "STEP" or "IGES"
   std::string lengthUnit; ///< the unit of the coordinates (the file's), e.g. "MM", "INCH"

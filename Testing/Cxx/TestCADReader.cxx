@@ -311,6 +311,18 @@ std::map<std::string, TopoDS_Shape> solids()
     fillet.Add(0.3, TopoDS::Edge(ex.Current()));
     s["box-one-fillet"] = fillet.Shape();
   }
+  {
+    // 16 holes of three radii in one face: its polygon has 17 loops (VTK's contour
+    // triangulator dropped triangles here; CGAL's constrained triangulation does not).
+    TopoDS_Compound holes;
+    BRep_Builder builder;
+    builder.MakeCompound(holes);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        builder.Add(holes, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(4.0 * i + 2, 4.0 * j + 2, -1), gp_Dir(0, 0, 1)),
+                             0.6 + 0.1 * ((i + j) % 3), 3).Shape());
+    s["plate-16-holes"] = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(16, 16, 0.5).Shape(), holes).Shape();
+  }
   s["plate-with-hole"] = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 3, 0.5).Shape(),
     BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(1, 1.5, -1), gp_Dir(0, 0, 1)), 0.5, 3).Shape()).Shape();
   {
