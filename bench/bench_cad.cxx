@@ -44,7 +44,9 @@
 #include <gp_Ax2.hxx>
 
 #include <vtkCommand.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
+#include <vtkOutputWindow.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -215,6 +217,9 @@ void row(const std::string& name, const TopoDS_Shape& shape, int repeats)
 int main(int argc, char* argv[])
 {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  // Refusals are reported in the table, not as VTK's multi-line log.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   const int repeats = quick ? 1 : 5;
   for (Message_SequenceOfPrinters::Iterator it(Message::DefaultMessenger()->Printers()); it.More(); it.Next())
     it.Value()->SetTraceLevel(Message_Fail);

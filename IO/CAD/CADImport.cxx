@@ -920,13 +920,14 @@ private:
         const Vec3 d = piece.b - piece.a;
         const double length = d.norm();
         const Vec3 x = d / length, y = side * t.normal.cross(x);
-        piece.apex = piece.a + 0.5 * length * (x + y);
-        // The cap A, B, apex (its roof has slope 1) holds the curve when the control points
-        // stay in the wedges of slope 1/2 at both ends: no crossing of the straight sides.
+        piece.apex = piece.a + 0.5 * length * x + 0.75 * length * y;
+        // The cap A, B, apex (its roof has slope 3/2) holds the curve when the control points
+        // stay in the wedges of slope 3/4 at both ends (then so does the curve, in their
+        // hull): no crossing of the straight sides. Conic arcs of up to 60° fit.
         for (int k = 0; k <= piece.curve.degree(); ++k)
         {
           const Vec3 q = piece.curve.controlPoint(k) - piece.a;
-          const double qx = q.dot(x), qy = q.dot(y), room = 0.5 * std::min(qx, length - qx);
+          const double qx = q.dot(x), qy = q.dot(y), room = 0.75 * std::min(qx, length - qx);
           if (qx < -Tol || qx > length + Tol || std::abs(qy) > room + Tol)
           {
             piece.fits = false;
@@ -985,10 +986,41 @@ private:
         orient(cap.b, cap.apex, q) * orient(cap.b, cap.apex, cap.a) > scale &&
         orient(cap.apex, cap.a, q) * orient(cap.apex, cap.a, cap.b) > scale;
     };
+    // Pairs whose extents along a direction of the plane overlap (sweep and prune): faces
+    // with hundreds of holes have thousands of pieces.
+    const Vec3 axis = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+    std::vector<std::pair<double, double>> extent(pieces.size());
     for (size_t k = 0; k < pieces.size(); ++k)
     {
-      for (size_t m = k + 1; m < pieces.size(); ++m)
+      const Piece& p = *pieces[k];
+      double lo = std::min(p.a.dot(axis), p.b.dot(axis)), hi = std::max(p.a.dot(axis), p.b.dot(axis));
+      if (p.cap)
       {
+        lo = std::min(lo, p.apex.dot(axis));
+        hi = std::max(hi, p.apex.dot(axis));
+      }
+      extent[k] = { lo - Tol, hi + Tol };
+    }
+    std::vector<size_t> order(pieces.size());
+    for (size_t k = 0; k < order.size(); ++k)
+    {
+      order[k] = k;
+    }
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return extent[a].first < extent[b].first; });
+    auto vertices = [](const Piece& p) {
+      std::vector<Vec3> v{ p.a, p.b };
+      if (p.cap)
+      {
+        v.push_back(p.apex);
+      }
+      return v;
+    };
+    for (size_t ok = 0; ok < order.size(); ++ok)
+    {
+      const size_t k0 = order[ok];
+      for (size_t om = ok + 1; om < order.size() && extent[order[om]].first <= extent[k0].second; ++om)
+      {
+        const size_t k = std::min(k0, order[om]), m = std::max(k0, order[om]);
         bool clash = false;
         for (const auto& s : segments(*pieces[k]))
         {
@@ -997,13 +1029,14 @@ private:
             clash |= cross(s, u);
           }
         }
-        if (pieces[k]->cap && (inside(*pieces[k], pieces[m]->a) || inside(*pieces[k], pieces[m]->b)))
+        // Overlapping triangles cross or hold one another's corners.
+        for (const Vec3& q : vertices(*pieces[m]))
         {
-          clash = true;
+          clash |= pieces[k]->cap && inside(*pieces[k], q);
         }
-        if (pieces[m]->cap && (inside(*pieces[m], pieces[k]->a) || inside(*pieces[m], pieces[k]->b)))
+        for (const Vec3& q : vertices(*pieces[k]))
         {
-          clash = true;
+          clash |= pieces[m]->cap && inside(*pieces[m], q);
         }
         if (clash)
         {
