@@ -14,6 +14,7 @@
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Curve.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomConvert.hxx>
@@ -504,6 +505,19 @@ private:
     {
       snap(v0, v1, s->VPeriod());
     }
+    // ... and can reach past a surface's own bounds (a sphere's poles) by a rounding.
+    double su0, su1, sv0, sv1;
+    s->Bounds(su0, su1, sv0, sv1);
+    if (!s->IsUPeriodic())
+    {
+      u0 = std::max(u0, su0);
+      u1 = std::min(u1, su1);
+    }
+    if (!s->IsVPeriodic())
+    {
+      v0 = std::max(v0, sv0);
+      v1 = std::min(v1, sv1);
+    }
     const double eu = 1e-9 * std::max(1.0, u1 - u0), ev = 1e-9 * std::max(1.0, v1 - v0);
     std::vector<EdgeOnFace> edges;
     for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
@@ -519,22 +533,54 @@ private:
       {
         return false;
       }
-      Geom2dAdaptor_Curve pa(pc, a, b);
-      if (pa.GetType() != GeomAbs_Line)
-      {
-        return false;
-      }
       const gp_Pnt2d pa0 = pc->Value(a), pb0 = pc->Value(b);
+      // STEP stores parameter curves as B-splines fitted to the edge's tolerance: an
+      // iso-line is then a B-spline whose poles share the fixed coordinate nearly, and the
+      // edge itself (the exact 3D curve) lies on the surface's iso-line.
+      Geom2dAdaptor_Curve pa(pc, a, b);
+      auto isoLine = [&](bool alongU, double fixed, double eps) {
+        if (pa.GetType() == GeomAbs_Line)
+        {
+          return true;
+        }
+        if (pa.GetType() != GeomAbs_BSplineCurve)
+        {
+          return false;
+        }
+        const Handle(Geom2d_BSplineCurve) bs = pa.BSpline();
+        for (int k = 1; k <= bs->NbPoles(); ++k)
+        {
+          if (std::abs((alongU ? bs->Pole(k).Y() : bs->Pole(k).X()) - fixed) > 1e3 * eps)
+          {
+            return false;
+          }
+        }
+        double c0, c1;
+        Handle(Geom_Curve) curve = BRep_Tool::Curve(e, c0, c1);
+        Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+        Handle(Geom_Curve) iso = alongU ? surface->VIso(fixed) : surface->UIso(fixed);
+        for (int k = 0; k <= 8; ++k)
+        {
+          GeomAPI_ProjectPointOnCurve projection(curve->Value(c0 + (c1 - c0) * k / 8.0), iso);
+          if (projection.NbPoints() == 0 || projection.LowerDistance() > 100 * Tol)
+          {
+            return false;
+          }
+        }
+        return true;
+      };
       EdgeOnFace eo;
       eo.edge = edgeIndex(e);
-      if (std::abs(pa0.Y() - pb0.Y()) <= ev && (std::abs(pa0.Y() - v0) <= ev || std::abs(pa0.Y() - v1) <= ev))
+      if (std::abs(pa0.Y() - pb0.Y()) <= ev && (std::abs(pa0.Y() - v0) <= ev || std::abs(pa0.Y() - v1) <= ev) &&
+        isoLine(true, pa0.Y(), ev))
       {
         eo.isoV = true;
         eo.fixed = std::abs(pa0.Y() - v0) <= ev ? v0 : v1;
         eo.from = std::min(pa0.X(), pb0.X());
         eo.to = std::max(pa0.X(), pb0.X());
       }
-      else if (std::abs(pa0.X() - pb0.X()) <= eu && (std::abs(pa0.X() - u0) <= eu || std::abs(pa0.X() - u1) <= eu))
+      else if (std::abs(pa0.X() - pb0.X()) <= eu && (std::abs(pa0.X() - u0) <= eu || std::abs(pa0.X() - u1) <= eu) &&
+        isoLine(false, pa0.X(), eu))
       {
         eo.isoV = false;
         eo.fixed = std::abs(pa0.X() - u0) <= eu ? u0 : u1;
@@ -555,8 +601,8 @@ private:
     }
     catch (const Standard_Failure& e)
     {
-      fail(faceName(t.face), " (", surfaceTypeName(BRepAdaptor_Surface(face).GetType()),
-        ") cannot be converted to a rational B-spline: ", e.GetMessageString());
+      fail(faceName(t.face), " (", surfaceTypeName(BRepAdaptor_Surface(face).GetType()), " over u ", u0,
+        "..", u1, ", v ", v0, "..", v1, ") cannot be converted to a rational B-spline: ", e.GetMessageString());
     }
     if (b->IsUPeriodic())
     {

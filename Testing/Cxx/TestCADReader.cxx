@@ -312,6 +312,15 @@ std::map<std::string, TopoDS_Shape> solids()
     s["box-one-fillet"] = fillet.Shape();
   }
   {
+    // Every edge rounded: cylinders meeting sphere octants at the corners (STEP stores
+    // their boundary parameter curves as B-splines; the octants reach the poles).
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 2, 3).Shape();
+    BRepFilletAPI_MakeFillet fillet(box);
+    for (TopExp_Explorer ex(box, TopAbs_EDGE); ex.More(); ex.Next())
+      fillet.Add(0.3, TopoDS::Edge(ex.Current()));
+    s["box-all-edges-filleted"] = fillet.Shape();
+  }
+  {
     // 16 holes of three radii in one face: its polygon has 17 loops (VTK's contour
     // triangulator dropped triangles here; CGAL's constrained triangulation does not).
     TopoDS_Compound holes;
