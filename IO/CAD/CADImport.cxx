@@ -23,13 +23,24 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
+#include <IGESCAFControl_Reader.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
-#include <STEPControl_Reader.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <Quantity_Color.hxx>
+#include <TCollection_AsciiString.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -193,8 +204,49 @@ private:
   std::vector<Message_Gravity> Levels;
 };
 
-// Reads the file with OpenCASCADE, keeping lengths in the file's own unit.
-TopoDS_Shape readShape(const std::string& fileName, CADBoundary& out)
+// The file read into an XCAF document: the shape, and the names and colours the file gives
+// its parts and faces.
+struct CADDocument
+{
+  Handle(TDocStd_Document) document;
+  Handle(XCAFDoc_ShapeTool) shapes;
+  Handle(XCAFDoc_ColorTool) colours;
+  TopoDS_Shape shape;
+
+  std::string name(const TopoDS_Shape& s) const
+  {
+    TDF_Label label;
+    Handle(TDataStd_Name) name;
+    if (!shapes->Search(s, label) || !label.FindAttribute(TDataStd_Name::GetID(), name))
+    {
+      return "";
+    }
+    return TCollection_AsciiString(name->Get()).ToCString();
+  }
+
+  bool colour(const TopoDS_Shape& s, Vec3& rgb) const
+  {
+    Quantity_Color c;
+    if (colours->GetColor(s, XCAFDoc_ColorSurf, c) || colours->GetColor(s, XCAFDoc_ColorGen, c))
+    {
+      rgb = Vec3(c.Red(), c.Green(), c.Blue());
+      return true;
+    }
+    return false;
+  }
+
+  ~CADDocument()
+  {
+    if (!document.IsNull())
+    {
+      XCAFApp_Application::GetApplication()->Close(document);
+    }
+  }
+};
+
+// Reads the file with OpenCASCADE (its XDE readers: names and colours too), keeping lengths
+// in the file's own unit.
+void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& doc)
 {
   {
     std::ifstream probe(fileName, std::ios::binary);
@@ -215,59 +267,77 @@ TopoDS_Shape readShape(const std::string& fileName, CADBoundary& out)
     std::string saved = Interface_Static::CVal("xstep.cascade.unit");
     ~UnitSetting() { Interface_Static::SetCVal("xstep.cascade.unit", saved.c_str()); }
   } unitSetting;
-  TopoDS_Shape shape;
+  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc.document);
+  auto setUnit = [&](const std::string& fileUnit) {
+    out.lengthUnit = unitCode(fileUnit);
+    if (out.lengthUnit.empty())
+    {
+      out.lengthUnit = "MM";
+    }
+    Interface_Static::SetCVal("xstep.cascade.unit", out.lengthUnit.c_str());
+  };
   if (ext == "step" || ext == "stp")
   {
     out.format = "STEP";
-    STEPControl_Reader reader;
+    STEPCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    reader.SetColorMode(true);
     if (reader.ReadFile(fileName.c_str()) != IFSelect_RetDone)
     {
       fail("not a readable STEP file (OpenCASCADE's STEP reader failed)");
     }
     TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
-    reader.FileUnits(lengths, angles, solidAngles);
-    out.lengthUnit = lengths.IsEmpty() ? "" : unitCode(lengths.First().ToCString());
-    if (out.lengthUnit.empty())
-    {
-      out.lengthUnit = "MM";
-    }
-    Interface_Static::SetCVal("xstep.cascade.unit", out.lengthUnit.c_str());
-    if (reader.TransferRoots() == 0)
+    reader.ChangeReader().FileUnits(lengths, angles, solidAngles);
+    setUnit(lengths.IsEmpty() ? "" : lengths.First().ToCString());
+    if (!reader.Transfer(doc.document))
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
-    shape = reader.OneShape();
   }
   else if (ext == "iges" || ext == "igs")
   {
     out.format = "IGES";
-    IGESControl_Reader reader;
+    IGESCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    reader.SetColorMode(true);
     if (reader.ReadFile(fileName.c_str()) != IFSelect_RetDone)
     {
       fail("not a readable IGES file (OpenCASCADE's IGES reader failed)");
     }
     Handle(TCollection_HAsciiString) unit = reader.IGESModel()->GlobalSection().UnitName();
-    out.lengthUnit = unit.IsNull() ? "" : unitCode(unit->ToCString());
-    if (out.lengthUnit.empty())
-    {
-      out.lengthUnit = "MM";
-    }
-    Interface_Static::SetCVal("xstep.cascade.unit", out.lengthUnit.c_str());
-    if (reader.TransferRoots() == 0)
+    setUnit(unit.IsNull() ? "" : unit->ToCString());
+    if (!reader.Transfer(doc.document))
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
-    shape = reader.OneShape();
   }
   else
   {
     fail("unknown CAD format '.", ext, "' (expected .step, .stp, .iges or .igs)");
   }
-  if (shape.IsNull())
+  doc.shapes = XCAFDoc_DocumentTool::ShapeTool(doc.document->Main());
+  doc.colours = XCAFDoc_DocumentTool::ColorTool(doc.document->Main());
+  TDF_LabelSequence free;
+  doc.shapes->GetFreeShapes(free);
+  if (free.Length() == 1)
+  {
+    doc.shape = XCAFDoc_ShapeTool::GetShape(free.First());
+  }
+  else if (free.Length() > 1)
+  {
+    TopoDS_Compound all;
+    BRep_Builder builder;
+    builder.MakeCompound(all);
+    for (TDF_LabelSequence::Iterator it(free); it.More(); it.Next())
+    {
+      builder.Add(all, XCAFDoc_ShapeTool::GetShape(it.Value()));
+    }
+    doc.shape = all;
+  }
+  if (doc.shape.IsNull())
   {
     fail("the file holds no shape");
   }
-  return shape;
 }
 
 // The exact rational B-spline of an edge's curve over the edge's range, not periodic.
@@ -1125,6 +1195,44 @@ double shapeTolerance(const TopoDS_Shape& shape)
   return 1e-9 * Vec3(x1 - x0, y1 - y0, z1 - z0).norm();
 }
 
+// The colour of each face the file gives one (or its part, when the part has one).
+void faceColours(const CADDocument& doc, const TopoDS_Shape& part, CADBoundary& out)
+{
+  Vec3 partColour;
+  const bool partHasColour = doc.colour(part, partColour);
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(part, TopAbs_FACE, faces);
+  for (int f = 1; f <= faces.Extent(); ++f)
+  {
+    Vec3 rgb;
+    if (doc.colour(faces(f), rgb))
+    {
+      out.faceColours[f - 1] = rgb;
+    }
+    else if (partHasColour)
+    {
+      out.faceColours[f - 1] = partColour;
+    }
+  }
+}
+
+// Index of the part named `name` (names listed in the error when there is none).
+int partByName(const std::vector<std::string>& names, const std::string& name, const char* what)
+{
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    std::string known;
+    for (const std::string& n : names)
+    {
+      known += (known.empty() ? "'" : ", '") + n + "'";
+    }
+    fail("no ", what, " named '", name, "' (the file's ", what, "s are named: ",
+      known.empty() ? "none" : known, ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+
 void importSolid(const TopoDS_Shape& solid, CADBoundary& out)
 {
   for (TopExp_Explorer ex(solid, TopAbs_SHELL); ex.More(); ex.Next())
@@ -1138,7 +1246,8 @@ void importSolid(const TopoDS_Shape& solid, CADBoundary& out)
   tiler.tile(out);
 }
 
-void importPlanar(const TopoDS_Shape& shape, int part, CADBoundary& out)
+void importPlanar(const TopoDS_Shape& shape, int part, const std::string& partName,
+  const CADDocument& doc, CADBoundary& out)
 {
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(shape, TopAbs_EDGE, edges);
@@ -1154,6 +1263,14 @@ void importPlanar(const TopoDS_Shape& shape, int part, CADBoundary& out)
   if (!faces.empty())
   {
     out.partCount = static_cast<int>(faces.size());
+    for (const TopoDS_Face& f : faces)
+    {
+      out.partNames.push_back(doc.name(f));
+    }
+    if (!partName.empty())
+    {
+      part = partByName(out.partNames, partName, "face");
+    }
     if (part < 0 || part >= out.partCount)
     {
       fail("face ", part, " asked for, but the file has ", out.partCount, " face(s)");
@@ -1166,6 +1283,12 @@ void importPlanar(const TopoDS_Shape& shape, int part, CADBoundary& out)
     }
     source = faces[part];
     out.faceCount = 1;
+    out.partName = out.partNames[part];
+    Vec3 rgb;
+    if (doc.colour(source, rgb))
+    {
+      out.faceColours[part] = rgb;
+    }
   }
   else
   {
@@ -1201,7 +1324,9 @@ CADBoundary importCAD(const std::string& fileName, const CADImportOptions& optio
   CADBoundary out;
   try
   {
-    TopoDS_Shape shape = readShape(fileName, out);
+    CADDocument doc;
+    readDocument(fileName, out, doc);
+    const TopoDS_Shape& shape = doc.shape;
     std::vector<TopoDS_Shape> solids;
     for (TopExp_Explorer ex(shape, TopAbs_SOLID); ex.More(); ex.Next())
     {
@@ -1245,16 +1370,23 @@ CADBoundary importCAD(const std::string& fileName, const CADImportOptions& optio
       }
       out.dimension = 3;
       out.partCount = static_cast<int>(solids.size());
-      if (options.part < 0 || options.part >= out.partCount)
+      for (const TopoDS_Shape& s : solids)
       {
-        fail("solid ", options.part, " asked for, but the file has ", out.partCount, " solid(s)");
+        out.partNames.push_back(doc.name(s));
       }
-      importSolid(solids[options.part], out);
+      const int part = options.partName.empty() ? options.part : partByName(out.partNames, options.partName, "solid");
+      if (part < 0 || part >= out.partCount)
+      {
+        fail("solid ", part, " asked for, but the file has ", out.partCount, " solid(s)");
+      }
+      out.partName = out.partNames[part];
+      importSolid(solids[part], out);
+      faceColours(doc, solids[part], out);
     }
     else
     {
       out.dimension = 2;
-      importPlanar(shape, options.part, out);
+      importPlanar(shape, options.part, options.partName, doc, out);
     }
   }
   catch (const InputError& e)

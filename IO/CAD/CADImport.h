@@ -33,6 +33,7 @@
 #include "nurbs/BezierCurve.h"
 #include "nurbs/BezierPatch.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,7 @@ struct CADImportOptions
 {
   int dimension = 0; ///< 0: a solid when the file has one (or its faces close up), else 2D
   int part = 0;      ///< which solid (3D) or planar face (2D), in file order
+  std::string partName; ///< when set, the solid or face of this name (overrides part)
 };
 
 struct CADBoundary
@@ -72,6 +74,9 @@ struct CADBoundary
   std::string format;     ///< "STEP" or "IGES"
   std::string lengthUnit; ///< the unit of the coordinates (the file's), e.g. "MM", "INCH"
   int partCount = 0;      ///< solids (3D) or planar faces (2D) in the file
+  std::vector<std::string> partNames; ///< their names in the file ("" when unnamed)
+  std::string partName;   ///< the name of the part read
+  std::map<int, Vec3> faceColours; ///< RGB in [0, 1] of the faces the file colours (by FaceId)
   int faceCount = 0, edgeCount = 0; ///< of the part read
 };
 

@@ -5,7 +5,10 @@
 
 #include "common/InputError.h"
 
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkMath.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -42,6 +45,7 @@ vtkCADBoundaryReader::~vtkCADBoundaryReader()
 {
   this->SetFileName(nullptr);
   this->SetLengthUnit(nullptr);
+  this->SetPartName(nullptr);
 }
 
 bool vtkCADBoundaryReader::CanReadFile(const char* fileName)
@@ -75,6 +79,7 @@ int vtkCADBoundaryReader::RequestData(
     exactmat::CADImportOptions options;
     options.dimension = this->Dimension == 1 ? 0 : this->Dimension;
     options.part = this->PartIndex;
+    options.partName = this->PartName ? this->PartName : "";
     const exactmat::CADBoundary cad = exactmat::importCAD(this->FileName, options);
     this->UpdateProgress(0.5);
     exactmat::BoundaryGridBuilder builder;
@@ -91,7 +96,32 @@ int vtkCADBoundaryReader::RequestData(
       builder.addTriangle(t.net, t.face);
     }
     output->ShallowCopy(builder.grid());
+    if (!cad.faceColours.empty())
+    {
+      // The file's colours per cell (NaN where its face has none), for display.
+      vtkDataArray* ids = output->GetCellData()->GetArray(cad.dimension == 3 ? "FaceId" : "EdgeId");
+      vtkNew<vtkDoubleArray> colours;
+      colours->SetName("FaceColor");
+      colours->SetNumberOfComponents(3);
+      colours->SetNumberOfTuples(output->GetNumberOfCells());
+      const double none[3] = { vtkMath::Nan(), vtkMath::Nan(), vtkMath::Nan() };
+      for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+      {
+        const auto it = cad.dimension == 3 && ids ? cad.faceColours.find(static_cast<int>(ids->GetTuple1(c)))
+                                                  : cad.faceColours.begin();
+        colours->SetTypedTuple(c, it == cad.faceColours.end() ? none : it->second.data());
+      }
+      output->GetCellData()->AddArray(colours);
+    }
     vtkFieldData* fd = output->GetFieldData();
+    vtkNew<vtkStringArray> names;
+    names->SetName("PartNames");
+    for (const std::string& n : cad.partNames)
+    {
+      names->InsertNextValue(n);
+    }
+    fd->AddArray(names);
+    addFieldString(fd, "PartName", cad.partName);
     addFieldString(fd, "LengthUnit", cad.lengthUnit);
     addFieldString(fd, "SourceFormat", cad.format);
     vtkNew<vtkIntArray> parts;
@@ -125,6 +155,7 @@ void vtkCADBoundaryReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Dimension: " << this->Dimension << "\n";
   os << indent << "PartIndex: " << this->PartIndex << "\n";
+  os << indent << "PartName: " << (this->PartName ? this->PartName : "(none)") << "\n";
   os << indent << "NumberOfParts: " << this->NumberOfParts << "\n";
   os << indent << "LengthUnit: " << (this->LengthUnit ? this->LengthUnit : "(none)") << "\n";
 }

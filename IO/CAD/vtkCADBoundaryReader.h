@@ -8,8 +8,10 @@
  * vtkMAT3DFilter; a planar face, wire or sketch gives rational Bézier curves, for
  * vtkMAT2DFilter. `FaceId` / `EdgeId` are OpenCASCADE's indices of the part's faces / edges
  * (TopExp::MapShapes order, from 0); every cell also carries `ParameterRange`, the span of
- * the file's parameterisation it covers. Field data: `LengthUnit` (the file's unit, in which
- * the coordinates are given), `SourceFormat` ("STEP"/"IGES") and `NumberOfParts`.
+ * the file's parameterisation it covers, and `FaceColor` (RGB in [0, 1], NaN where none)
+ * when the file colours faces or parts. Field data: `LengthUnit` (the file's unit, in which
+ * the coordinates are given), `SourceFormat` ("STEP"/"IGES"), `NumberOfParts`,
+ * `PartNames` (the names the file gives its solids, or faces in 2D) and `PartName`.
  *
  * Supported exactly: lines, conics, Bézier and B-spline curves; planes, cylinders, cones,
  * spheres, tori, surfaces of revolution and extrusion, Bézier and B-spline surfaces whose
@@ -52,6 +54,13 @@ public:
   vtkGetMacro(PartIndex, int);
   ///@}
 
+  ///@{
+  /// When set (non-empty), the solid (3D) or face (2D) the file names so, instead of
+  /// PartIndex; an unknown name is an error listing the file's names. Default: none.
+  vtkSetStringMacro(PartName);
+  vtkGetStringMacro(PartName);
+  ///@}
+
   /// After an update: the parts (solids or faces) in the file, and the unit read.
   vtkGetMacro(NumberOfParts, int);
   vtkGetStringMacro(LengthUnit);
@@ -70,6 +79,7 @@ protected:
   int PartIndex = 0;
   int NumberOfParts = 0;
   char* LengthUnit = nullptr;
+  char* PartName = nullptr;
 
 private:
   vtkCADBoundaryReader(const vtkCADBoundaryReader&) = delete;

@@ -38,7 +38,15 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <Quantity_Color.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -617,4 +625,53 @@ TEST(vtkCADBoundaryReader, PlanarFaceOfASolidIn2D)
   // A cylindrical face is no planar domain: named.
   const Read curved = readCAD(file, 2, 2);
   EXPECT_NE(curved.errors.find("face 2 is a cylinder, not planar"), std::string::npos) << curved.errors;
+}
+
+TEST(vtkCADBoundaryReader, PartsByNameWithTheirColours)
+{
+  // Two named parts, one coloured, written through OpenCASCADE's XDE document.
+  Handle(TDocStd_Document) doc;
+  XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);
+  Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+  const TDF_Label plate = shapes->AddShape(BRepPrimAPI_MakeBox(4, 3, 0.5).Shape(), false);
+  TDataStd_Name::Set(plate, "plate");
+  const TDF_Label pin =
+    shapes->AddShape(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(10, 0, 0), gp_Dir(0, 0, 1)), 0.5, 2).Shape(), false);
+  TDataStd_Name::Set(pin, "pin");
+  colours->SetColor(pin, Quantity_Color(1.0, 0.5, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorGen);
+  STEPCAFControl_Writer writer;
+  ASSERT_TRUE(writer.Transfer(doc, STEPControl_AsIs));
+  ASSERT_EQ(writer.Write(output("cad-named.step").c_str()), IFSelect_RetDone);
+  XCAFApp_Application::GetApplication()->Close(doc);
+
+  vtkNew<vtkCADBoundaryReader> reader;
+  reader->SetFileName(output("cad-named.step").c_str());
+  reader->SetPartName("pin");
+  auto errors = ErrorRecorder::watch(reader);
+  reader->Update();
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  EXPECT_EQ(reader->GetNumberOfParts(), 2);
+  vtkStringArray* names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("PartNames"));
+  ASSERT_TRUE(names);
+  ASSERT_EQ(names->GetNumberOfValues(), 2);
+  EXPECT_TRUE((names->GetValue(0) == "plate" && names->GetValue(1) == "pin") ||
+    (names->GetValue(0) == "pin" && names->GetValue(1) == "plate"));
+  double b[6];
+  grid->GetBounds(b);
+  EXPECT_GT(b[0], 8.0); // the pin (control points reach x = 9), not the plate (x = 0)
+  vtkDataArray* colour = grid->GetCellData()->GetArray("FaceColor");
+  ASSERT_TRUE(colour);
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    EXPECT_NEAR(colour->GetComponent(c, 0), 1.0, 1e-6);
+    EXPECT_NEAR(colour->GetComponent(c, 1), 0.5, 1e-2); // sRGB/linear rounding in the file
+    EXPECT_NEAR(colour->GetComponent(c, 2), 0.0, 1e-6);
+  }
+  // An unknown name lists the names there are.
+  reader->SetPartName("washer");
+  reader->Update();
+  EXPECT_NE(errors->Messages.find("no solid named 'washer'"), std::string::npos) << errors->Messages;
+  EXPECT_NE(errors->Messages.find("'pin'"), std::string::npos) << errors->Messages;
 }

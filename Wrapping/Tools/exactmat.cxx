@@ -26,6 +26,8 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkIdList.h>
@@ -41,6 +43,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -77,7 +80,8 @@ const char* Usage = R"(usage:
                  planar face or wires of a .step/.stp/.iges/.igs file (read exactly);
                  default: the bundled shape plate-with-holes (or --shape NAME)
   --face N       which planar face of a STEP/IGES INPUT (default 0, file order)
-  --part N       which solid (3d) or planar face (2d) of a STEP/IGES INPUT (default 0)
+  --part N|NAME  which solid (3d) or planar face (2d) of a STEP/IGES INPUT: its index
+                 (default 0) or the name the file gives it
   -o OUT.vtp     the MAT as VTK XML polydata (default: exactmat-2d.vtp)
   --tolerance T  adaptive steps: polyline within T x domain size of the MAT (default 1e-4)
   --step S       fixed steps of S x domain size, as in the thesis (branch check every B,
@@ -117,6 +121,7 @@ struct Arguments
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
   bool shapeGiven = false, outputGiven = false;
   int part = 0; ///< solid or face of a STEP/IGES input
+  std::string partName; ///< or its name in the file
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
 };
 
@@ -203,12 +208,17 @@ Arguments parse(int argc, char* argv[])
     }
     else if (arg == "--face" || arg == "--part")
     {
+      // An index, or (--part) the name the file gives the part.
       const char* text = value();
       char* end = nullptr;
       const long n = std::strtol(text, &end, 10);
-      if (!text[0] || *end || n < 0 || n > 1000000000)
-        usageError(arg + " needs an index >= 0, got '" + text + "'");
-      a.part = static_cast<int>(n);
+      if (text[0] && !*end && n >= 0 && n <= 1000000000)
+        a.part = static_cast<int>(n);
+      else if (arg == "--part" && text[0] && !std::isdigit(static_cast<unsigned char>(text[0])) && text[0] != '-')
+        a.partName = text;
+      else
+        usageError(arg + " needs an index >= 0" + (arg == "--part" ? std::string(" or a name") : "") + ", got '" +
+          text + "'");
     }
     else if (arg == "--max-step")
       a.maxStep = number(arg, value());
@@ -394,12 +404,16 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     r->SetFileName(a.input.c_str());
     r->SetDimension(a.command == "3d" ? 3 : a.command == "auto" ? 0 : 2);
     r->SetPartIndex(a.part);
+    if (!a.partName.empty())
+      r->SetPartName(a.partName.c_str());
     r->AddObserver(vtkCommand::ErrorEvent, errors);
     r->Update();
     if (errors->Failed)
       return nullptr;
-    label = a.input + (a.part > 0 ? " (part " + std::to_string(a.part) + ")" : "") + ", unit " +
-      (r->GetLengthUnit() ? r->GetLengthUnit() : "?");
+    vtkStringArray* name = vtkStringArray::SafeDownCast(r->GetOutput()->GetFieldData()->GetAbstractArray("PartName"));
+    const std::string partName = name && name->GetNumberOfValues() > 0 ? name->GetValue(0) : "";
+    label = a.input + (!partName.empty() ? " (part '" + partName + "')" : a.part > 0 ? " (part " + std::to_string(a.part) + ")" : "") +
+      ", unit " + (r->GetLengthUnit() ? r->GetLengthUnit() : "?");
     return vtkSmartPointer<vtkUnstructuredGrid>(r->GetOutput());
   }
   else if (endsWith(a.input, ".vtu"))
