@@ -8,6 +8,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_Result.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -64,6 +67,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace exactmat
 {
@@ -1241,6 +1245,39 @@ void importSolid(const TopoDS_Shape& solid, CADBoundary& out)
     {
       fail("a shell of the solid is not closed (it has free edges): not a solid boundary");
     }
+  }
+  // OpenCASCADE's readers heal what they can silently; what its own check still finds wrong
+  // is reported (the exact conversion below does its own checks and fails on what matters).
+  BRepCheck_Analyzer check(solid);
+  if (!check.IsValid())
+  {
+    TopTools_IndexedMapOfShape faces, edges;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    TopExp::MapShapes(solid, TopAbs_EDGE, edges);
+    std::string where = "the solid";
+    std::ostringstream status;
+    for (const auto& [map, what] : { std::pair{ &faces, "face " }, { &edges, "edge " } })
+    {
+      for (int k = 1; k <= map->Extent() && status.str().empty(); ++k)
+      {
+        if (!check.IsValid((*map)(k)))
+        {
+          where = what + std::to_string(k - 1);
+          const Handle(BRepCheck_Result)& result = check.Result((*map)(k));
+          if (!result.IsNull() && !result->Status().IsEmpty())
+          {
+            BRepCheck::Print(result->Status().First(), status);
+          }
+        }
+      }
+    }
+    std::string text = status.str();
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    out.warnings.push_back("OpenCASCADE's shape check finds " + where + " invalid" +
+      (text.empty() ? std::string() : " (" + text + ")") + " after its own healing");
   }
   SolidTiler tiler(solid, shapeTolerance(solid));
   tiler.tile(out);

@@ -77,6 +77,7 @@ struct CADBoundary
   std::vector<std::string> partNames; ///< their names in the file ("" when unnamed)
   std::string partName;   ///< the name of the part read
   std::map<int, Vec3> faceColours; ///< RGB in [0, 1] of the faces the file colours (by FaceId)
+  std::vector<std::string> warnings; ///< what OpenCASCADE's shape check finds after healing
   int faceCount = 0, edgeCount = 0; ///< of the part read
 };
 
