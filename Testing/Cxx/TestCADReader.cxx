@@ -3,6 +3,7 @@
 // MATs of read parts against the same shapes built here; bad files.
 #include "vtkCADBoundaryReader.h"
 #include "vtkExactMATArrayNames.h"
+#include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
 #include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
@@ -304,6 +305,45 @@ Mass extrusionMass(double height)
   return { 2.0 * area + height * perimeter, area * height };
 }
 
+// The catalogue shape's NURBS curves as OpenCASCADE B-spline edges, exactly.
+std::vector<TopoDS_Edge> occtEdges(const Shape& shape)
+{
+  std::vector<TopoDS_Edge> edges;
+  for (const NurbsCurve& c : shape.curves)
+  {
+    TColgp_Array1OfPnt poles(1, c.controlPointCount());
+    TColStd_Array1OfReal weights(1, c.controlPointCount());
+    for (int i = 0; i < c.controlPointCount(); ++i)
+    {
+      const Vec3 p = c.controlPoint(i);
+      poles(i + 1) = gp_Pnt(p.x(), p.y(), p.z());
+      weights(i + 1) = c.weight(i);
+    }
+    std::vector<double> distinct;
+    std::vector<int> mult;
+    for (double k : c.knots())
+    {
+      if (!distinct.empty() && k == distinct.back())
+        ++mult.back();
+      else
+      {
+        distinct.push_back(k);
+        mult.push_back(1);
+      }
+    }
+    TColStd_Array1OfReal knots(1, static_cast<int>(distinct.size()));
+    TColStd_Array1OfInteger mults(1, static_cast<int>(distinct.size()));
+    for (size_t i = 0; i < distinct.size(); ++i)
+    {
+      knots(static_cast<int>(i) + 1) = distinct[i];
+      mults(static_cast<int>(i) + 1) = mult[i];
+    }
+    Handle(Geom_BSplineCurve) b = new Geom_BSplineCurve(poles, weights, knots, mults, c.degree());
+    edges.push_back(BRepBuilderAPI_MakeEdge(b));
+  }
+  return edges;
+}
+
 std::map<std::string, TopoDS_Shape> solids()
 {
   std::map<std::string, TopoDS_Shape> s;
@@ -479,41 +519,7 @@ TEST(vtkCADBoundaryReader, PlanarFaceMATIsTheCatalogueMAT)
   {
     SCOPED_TRACE(shapeName);
     const Shape shape = makeShape(shapeName);
-    std::vector<TopoDS_Wire> wires;
-    BRepBuilderAPI_MakeWire all;
-    std::vector<TopoDS_Edge> edges;
-    for (const NurbsCurve& c : shape.curves)
-    {
-      TColgp_Array1OfPnt poles(1, c.controlPointCount());
-      TColStd_Array1OfReal weights(1, c.controlPointCount());
-      for (int i = 0; i < c.controlPointCount(); ++i)
-      {
-        const Vec3 p = c.controlPoint(i);
-        poles(i + 1) = gp_Pnt(p.x(), p.y(), p.z());
-        weights(i + 1) = c.weight(i);
-      }
-      std::vector<double> distinct;
-      std::vector<int> mult;
-      for (double k : c.knots())
-      {
-        if (!distinct.empty() && k == distinct.back())
-          ++mult.back();
-        else
-        {
-          distinct.push_back(k);
-          mult.push_back(1);
-        }
-      }
-      TColStd_Array1OfReal knots(1, static_cast<int>(distinct.size()));
-      TColStd_Array1OfInteger mults(1, static_cast<int>(distinct.size()));
-      for (size_t i = 0; i < distinct.size(); ++i)
-      {
-        knots(static_cast<int>(i) + 1) = distinct[i];
-        mults(static_cast<int>(i) + 1) = mult[i];
-      }
-      Handle(Geom_BSplineCurve) b = new Geom_BSplineCurve(poles, weights, knots, mults, c.degree());
-      edges.push_back(BRepBuilderAPI_MakeEdge(b));
-    }
+    const std::vector<TopoDS_Edge> edges = occtEdges(shape);
     // A compound of the edges (a sketch): the reader takes every edge when there is no face.
     TopoDS_Compound sketch;
     BRep_Builder builder;
@@ -674,4 +680,57 @@ TEST(vtkCADBoundaryReader, PartsByNameWithTheirColours)
   reader->Update();
   EXPECT_NE(errors->Messages.find("no solid named 'washer'"), std::string::npos) << errors->Messages;
   EXPECT_NE(errors->Messages.find("'pin'"), std::string::npos) << errors->Messages;
+}
+
+TEST(vtkCADBoundaryReader, ExtrusionMATIsTheSweptMAT)
+{
+  // Catalogue profiles handed to OpenCASCADE as B-spline edges, extruded by it
+  // (BRepPrimAPI_MakePrism), written as STEP and read back: the general 3D MAT of the read
+  // solid has the junctions of vtkMAT25DFilter's MAT of the same profile extruded.
+  for (const auto& [shapeName, length] : { std::pair<std::string, double>{ "l-shape", 2.5 }, { "star", 2.0 } })
+  {
+    SCOPED_TRACE(shapeName);
+    BRepBuilderAPI_MakeWire wire;
+    for (const TopoDS_Edge& e : occtEdges(makeShape(shapeName)))
+      wire.Add(e);
+    ASSERT_TRUE(wire.IsDone());
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(wire.Wire(), true);
+    const std::string file = output("cad-extruded-" + shapeName + ".step");
+    writeStep(BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, length)).Shape(), file);
+    vtkNew<vtkCADBoundaryReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkMAT3DFilter> general;
+    general->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkNURBSSource> profile;
+    profile->SetShapeName(shapeName.c_str());
+    vtkNew<vtkMAT25DFilter> swept;
+    swept->SetInputConnection(profile->GetOutputPort());
+    swept->SetLength(length);
+    std::vector<std::vector<double>> junctions[2];
+    vtkAlgorithm* filters[2] = { general, swept };
+    for (int k = 0; k < 2; ++k)
+    {
+      auto errors = ErrorRecorder::watch(filters[k]);
+      filters[k]->Update();
+      ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+      vtkPolyData* out = vtkPolyData::SafeDownCast(filters[k]->GetOutputDataObject(0));
+      vtkDataArray* type = out->GetPointData()->GetArray(arrays::PointType);
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        if (type->GetTuple1(i) == 2)
+        {
+          double x[3];
+          out->GetPoint(i, x);
+          // Both extrude along +z or −z from the profile's plane: compare |z| to the middle.
+          junctions[k].push_back({ std::round(x[0] * 1e7) / 1e7, std::round(x[1] * 1e7) / 1e7,
+            std::round(std::abs(std::abs(x[2]) - 0.5 * length) * 1e7) / 1e7 });
+        }
+      }
+      std::sort(junctions[k].begin(), junctions[k].end());
+      junctions[k].erase(std::unique(junctions[k].begin(), junctions[k].end()), junctions[k].end());
+    }
+    EXPECT_TRUE(general->GetVerificationPassed());
+    EXPECT_GT(junctions[0].size(), 0u);
+    EXPECT_EQ(junctions[0], junctions[1]);
+  }
 }
