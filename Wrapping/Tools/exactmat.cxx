@@ -413,7 +413,10 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     if (errors->Failed)
       return nullptr;
     vtkStringArray* name = vtkStringArray::SafeDownCast(r->GetOutput()->GetFieldData()->GetAbstractArray("PartName"));
-    const std::string partName = name && name->GetNumberOfValues() > 0 ? name->GetValue(0) : "";
+    // The part's name when it picks one of several (a single part is often named by the
+    // exporting program only).
+    const std::string partName = name && name->GetNumberOfValues() > 0 &&
+        (r->GetNumberOfParts() > 1 || !a.partName.empty()) ? name->GetValue(0) : "";
     label = a.input + (!partName.empty() ? " (part '" + partName + "')" : a.part > 0 ? " (part " + std::to_string(a.part) + ")" : "") +
       ", unit " + (r->GetLengthUnit() ? r->GetLengthUnit() : "?");
     return vtkSmartPointer<vtkUnstructuredGrid>(r->GetOutput());
