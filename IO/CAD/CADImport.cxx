@@ -32,7 +32,9 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <IGESControl_Controller.hxx>
 #include <STEPCAFControl_Reader.hxx>
+#include <STEPControl_Controller.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <BRep_Builder.hxx>
@@ -265,11 +267,21 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
   }
   const std::string ext = lowerExtension(fileName);
   const QuietMessenger quiet;
+  // The translators' settings exist once their controllers are initialised.
+  STEPControl_Controller::Init();
+  IGESControl_Controller::Init();
   // The unit OpenCASCADE converts lengths to is a process-wide setting: restore it after.
   struct UnitSetting
   {
-    std::string saved = Interface_Static::CVal("xstep.cascade.unit");
-    ~UnitSetting() { Interface_Static::SetCVal("xstep.cascade.unit", saved.c_str()); }
+    const char* current = Interface_Static::CVal("xstep.cascade.unit");
+    std::string saved = current ? current : "";
+    ~UnitSetting()
+    {
+      if (!saved.empty())
+      {
+        Interface_Static::SetCVal("xstep.cascade.unit", saved.c_str());
+      }
+    }
   } unitSetting;
   XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc.document);
   auto setUnit = [&](const std::string& fileUnit) {

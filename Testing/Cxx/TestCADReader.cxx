@@ -40,6 +40,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <STEPCAFControl_Writer.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -454,7 +455,8 @@ TEST(vtkCADBoundaryReader, SolidsAgreeWithOpenCASCADE)
 TEST(vtkCADBoundaryReader, LengthsStayInTheFilesUnit)
 {
   // A 25.4 mm cube written in inches is read as a 1 inch cube, unit INCH.
-  Interface_Static::SetCVal("write.step.unit", "INCH");
+  STEPControl_Controller::Init(); // defines the writer's settings in a fresh process
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.unit", "INCH"));
   writeStep(BRepPrimAPI_MakeBox(25.4, 25.4, 25.4).Shape(), output("cad-inch.step"));
   Interface_Static::SetCVal("write.step.unit", "MM");
   const Read r = readCAD(output("cad-inch.step"));
