@@ -8,9 +8,6 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
-#include <BRepCheck.hxx>
-#include <BRepCheck_Analyzer.hxx>
-#include <BRepCheck_Result.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -69,7 +66,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace exactmat
 {
@@ -230,8 +226,14 @@ struct CADDocument
     return TCollection_AsciiString(name->Get()).ToCString();
   }
 
+  bool hasColours = false; ///< the file colours something (else no per-face search)
+
   bool colour(const TopoDS_Shape& s, Vec3& rgb) const
   {
+    if (!hasColours)
+    {
+      return false;
+    }
     Quantity_Color c;
     if (colours->GetColor(s, XCAFDoc_ColorSurf, c) || colours->GetColor(s, XCAFDoc_ColorGen, c))
     {
@@ -333,6 +335,9 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
   }
   doc.shapes = XCAFDoc_DocumentTool::ShapeTool(doc.document->Main());
   doc.colours = XCAFDoc_DocumentTool::ColorTool(doc.document->Main());
+  TDF_LabelSequence colourLabels;
+  doc.colours->GetColors(colourLabels);
+  doc.hasColours = !colourLabels.IsEmpty();
   TDF_LabelSequence free;
   doc.shapes->GetFreeShapes(free);
   if (free.Length() == 1)
@@ -1258,39 +1263,6 @@ void importSolid(const TopoDS_Shape& solid, CADBoundary& out)
       fail("a shell of the solid is not closed (it has free edges): not a solid boundary");
     }
   }
-  // OpenCASCADE's readers heal what they can silently; what its own check still finds wrong
-  // is reported (the exact conversion below does its own checks and fails on what matters).
-  BRepCheck_Analyzer check(solid);
-  if (!check.IsValid())
-  {
-    TopTools_IndexedMapOfShape faces, edges;
-    TopExp::MapShapes(solid, TopAbs_FACE, faces);
-    TopExp::MapShapes(solid, TopAbs_EDGE, edges);
-    std::string where = "the solid";
-    std::ostringstream status;
-    for (const auto& [map, what] : { std::pair{ &faces, "face " }, { &edges, "edge " } })
-    {
-      for (int k = 1; k <= map->Extent() && status.str().empty(); ++k)
-      {
-        if (!check.IsValid((*map)(k)))
-        {
-          where = what + std::to_string(k - 1);
-          const Handle(BRepCheck_Result)& result = check.Result((*map)(k));
-          if (!result.IsNull() && !result->Status().IsEmpty())
-          {
-            BRepCheck::Print(result->Status().First(), status);
-          }
-        }
-      }
-    }
-    std::string text = status.str();
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    out.warnings.push_back("OpenCASCADE's shape check finds " + where + " invalid" +
-      (text.empty() ? std::string() : " (" + text + ")") + " after its own healing");
-  }
   SolidTiler tiler(solid, shapeTolerance(solid));
   tiler.tile(out);
 }
@@ -1312,12 +1284,13 @@ void importPlanar(const TopoDS_Shape& shape, int part, const std::string& partNa
   if (!faces.empty())
   {
     out.partCount = static_cast<int>(faces.size());
-    for (const TopoDS_Face& f : faces)
-    {
-      out.partNames.push_back(doc.name(f));
-    }
+    // Face names only when asked for by name: each is a search of the whole document.
     if (!partName.empty())
     {
+      for (const TopoDS_Face& f : faces)
+      {
+        out.partNames.push_back(doc.name(f));
+      }
       part = partByName(out.partNames, partName, "face");
     }
     if (part < 0 || part >= out.partCount)
@@ -1332,7 +1305,7 @@ void importPlanar(const TopoDS_Shape& shape, int part, const std::string& partNa
     }
     source = faces[part];
     out.faceCount = 1;
-    out.partName = out.partNames[part];
+    out.partName = out.partNames.empty() ? doc.name(source) : out.partNames[part];
     Vec3 rgb;
     if (doc.colour(source, rgb))
     {

@@ -74,10 +74,9 @@ struct CADBoundary
   std::string format;     ///< "STEP" or "IGES"
   std::string lengthUnit; ///< the unit of the coordinates (the file's), e.g. "MM", "INCH"
   int partCount = 0;      ///< solids (3D) or planar faces (2D) in the file
-  std::vector<std::string> partNames; ///< their names in the file ("" when unnamed)
+  std::vector<std::string> partNames; ///< the solids' names in the file ("" when unnamed); faces' only when a face is asked for by name
   std::string partName;   ///< the name of the part read
   std::map<int, Vec3> faceColours; ///< RGB in [0, 1] of the faces the file colours (by FaceId)
-  std::vector<std::string> warnings; ///< what OpenCASCADE's shape check finds after healing
   int faceCount = 0, edgeCount = 0; ///< of the part read
 };
 

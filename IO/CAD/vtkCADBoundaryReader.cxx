@@ -81,10 +81,6 @@ int vtkCADBoundaryReader::RequestData(
     options.part = this->PartIndex;
     options.partName = this->PartName ? this->PartName : "";
     const exactmat::CADBoundary cad = exactmat::importCAD(this->FileName, options);
-    for (const std::string& w : cad.warnings)
-    {
-      vtkWarningMacro(<< this->FileName << ": " << w);
-    }
     this->UpdateProgress(0.5);
     exactmat::BoundaryGridBuilder builder;
     for (const auto& c : cad.curves)

@@ -407,7 +407,7 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     if (!a.partName.empty())
       r->SetPartName(a.partName.c_str());
     r->AddObserver(vtkCommand::ErrorEvent, errors);
-    vtkNew<WarningLine> warnings; // OpenCASCADE's shape check after its healing
+    vtkNew<WarningLine> warnings;
     r->AddObserver(vtkCommand::WarningEvent, warnings);
     r->Update();
     if (errors->Failed)
