@@ -9,6 +9,8 @@
 #include "vtkCADBoundaryReader.h"
 #include "vtkMATBoundaryConversion.h"
 
+#include "OCCTTestParts.h"
+
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -90,28 +92,6 @@ public:
   std::string Message;
 };
 
-TopoDS_Face waveProfile()
-{
-  TColgp_Array1OfPnt poles(1, 5);
-  poles(1) = gp_Pnt(2, 0, 0);
-  poles(2) = gp_Pnt(2, 0.8, 0);
-  poles(3) = gp_Pnt(1.2, 1.4, 0);
-  poles(4) = gp_Pnt(0.5, 0.9, 0);
-  poles(5) = gp_Pnt(0.3, 1.2, 0);
-  TColStd_Array1OfReal knots(1, 3);
-  knots(1) = 0;
-  knots(2) = 0.5;
-  knots(3) = 1;
-  TColStd_Array1OfInteger mults(1, 3);
-  mults(1) = 4;
-  mults(2) = 1;
-  mults(3) = 4;
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.3, 0, 0), gp_Pnt(2, 0, 0)));
-  wire.Add(BRepBuilderAPI_MakeEdge(new Geom_BSplineCurve(poles, knots, mults, 3)));
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.3, 1.2, 0), gp_Pnt(0.3, 0, 0)));
-  return BRepBuilderAPI_MakeFace(wire.Wire());
-}
 
 // A 4k × 4k × 0.5 plate with k × k round through holes, its four vertical edges rounded.
 TopoDS_Shape holePlate(int k)
@@ -239,8 +219,8 @@ int main(int argc, char* argv[])
       all.Add(0.3, TopoDS::Edge(ex.Current()));
     row("box-all-edges-filleted", all.Shape(), repeats);
   }
-  row("free-form-extrusion", BRepPrimAPI_MakePrism(waveProfile(), gp_Vec(0, 0, 0.7)).Shape(), repeats);
-  row("free-form-revolution", BRepPrimAPI_MakeRevol(waveProfile(), gp_Ax1(gp_Pnt(0, -0.5, 0), gp_Dir(1, 0, 0))).Shape(),
+  row("free-form-extrusion", BRepPrimAPI_MakePrism(exactmat::testparts::waveProfile(), gp_Vec(0, 0, 0.7)).Shape(), repeats);
+  row("free-form-revolution", BRepPrimAPI_MakeRevol(exactmat::testparts::waveProfile(), gp_Ax1(gp_Pnt(0, -0.5, 0), gp_Dir(1, 0, 0))).Shape(),
     repeats);
   for (int k : quick ? std::vector<int>{ 1, 2 } : std::vector<int>{ 1, 2, 4, 8, 16 })
     row("plate-" + std::to_string(k) + "x" + std::to_string(k) + "-holes", holePlate(k), repeats);

@@ -2,8 +2,7 @@
 
 #include "CADImport.h"
 #include "vtkMATBoundaryConversion.h"
-
-#include "common/InputError.h"
+#include "vtkMATReaderErrors.h"
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -17,8 +16,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <exception>
-#include <new>
 #include <string>
 
 vtkStandardNewMacro(vtkCADBoundaryReader);
@@ -74,79 +71,66 @@ int vtkCADBoundaryReader::RequestData(
     vtkErrorMacro("no FileName set");
     return 0;
   }
-  try
-  {
-    exactmat::CADImportOptions options;
-    options.dimension = this->Dimension == 1 ? 0 : this->Dimension;
-    options.part = this->PartIndex;
-    options.partName = this->PartName ? this->PartName : "";
-    const exactmat::CADBoundary cad = exactmat::importCAD(this->FileName, options);
-    this->UpdateProgress(0.5);
-    exactmat::BoundaryGridBuilder builder;
-    for (const auto& c : cad.curves)
-    {
-      builder.addCurve(c.curve, c.edge, c.t0, c.t1);
-    }
-    for (const auto& p : cad.patches)
-    {
-      builder.addPatch(p.patch, p.face, p.u0, p.u1, p.v0, p.v1);
-    }
-    for (const auto& t : cad.triangles)
-    {
-      builder.addTriangle(t.net, t.face);
-    }
-    output->ShallowCopy(builder.grid());
-    if (!cad.faceColours.empty())
-    {
-      // The file's colours per cell (NaN where its face has none), for display.
-      vtkDataArray* ids = output->GetCellData()->GetArray(cad.dimension == 3 ? "FaceId" : "EdgeId");
-      vtkNew<vtkDoubleArray> colours;
-      colours->SetName("FaceColor");
-      colours->SetNumberOfComponents(3);
-      colours->SetNumberOfTuples(output->GetNumberOfCells());
-      const double none[3] = { vtkMath::Nan(), vtkMath::Nan(), vtkMath::Nan() };
-      for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  const bool read = exactmat::readReportingErrors(
+    this->FileName,
+    [&] {
+      exactmat::CADImportOptions options;
+      options.dimension = this->Dimension == 1 ? 0 : this->Dimension;
+      options.part = this->PartIndex;
+      options.partName = this->PartName ? this->PartName : "";
+      const exactmat::CADBoundary cad = exactmat::importCAD(this->FileName, options);
+      this->UpdateProgress(0.5);
+      exactmat::BoundaryGridBuilder builder;
+      for (const auto& c : cad.curves)
       {
-        const auto it = cad.dimension == 3 && ids ? cad.faceColours.find(static_cast<int>(ids->GetTuple1(c)))
-                                                  : cad.faceColours.begin();
-        colours->SetTypedTuple(c, it == cad.faceColours.end() ? none : it->second.data());
+        builder.addCurve(c.curve, c.edge, c.t0, c.t1);
       }
-      output->GetCellData()->AddArray(colours);
-    }
-    vtkFieldData* fd = output->GetFieldData();
-    vtkNew<vtkStringArray> names;
-    names->SetName("PartNames");
-    for (const std::string& n : cad.partNames)
-    {
-      names->InsertNextValue(n);
-    }
-    fd->AddArray(names);
-    addFieldString(fd, "PartName", cad.partName);
-    addFieldString(fd, "LengthUnit", cad.lengthUnit);
-    addFieldString(fd, "SourceFormat", cad.format);
-    vtkNew<vtkIntArray> parts;
-    parts->SetName("NumberOfParts");
-    parts->InsertNextValue(cad.partCount);
-    fd->AddArray(parts);
-    this->NumberOfParts = cad.partCount;
-    this->SetLengthUnit(cad.lengthUnit.c_str());
-  }
-  catch (const exactmat::InputError& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "out of memory reading " << this->FileName);
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "internal error reading " << this->FileName << ": " << e.what());
-    return 0;
-  }
-  return 1;
+      for (const auto& p : cad.patches)
+      {
+        builder.addPatch(p.patch, p.face, p.u0, p.u1, p.v0, p.v1);
+      }
+      for (const auto& t : cad.triangles)
+      {
+        builder.addTriangle(t.net, t.face);
+      }
+      output->ShallowCopy(builder.grid());
+      if (!cad.faceColours.empty())
+      {
+        // The file's colours per cell (NaN where its face has none), for display.
+        vtkDataArray* ids = output->GetCellData()->GetArray(cad.dimension == 3 ? "FaceId" : "EdgeId");
+        vtkNew<vtkDoubleArray> colours;
+        colours->SetName("FaceColor");
+        colours->SetNumberOfComponents(3);
+        colours->SetNumberOfTuples(output->GetNumberOfCells());
+        const double none[3] = { vtkMath::Nan(), vtkMath::Nan(), vtkMath::Nan() };
+        for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+        {
+          const auto it = cad.dimension == 3 && ids ? cad.faceColours.find(static_cast<int>(ids->GetTuple1(c)))
+                                                    : cad.faceColours.begin();
+          colours->SetTypedTuple(c, it == cad.faceColours.end() ? none : it->second.data());
+        }
+        output->GetCellData()->AddArray(colours);
+      }
+      vtkFieldData* fd = output->GetFieldData();
+      vtkNew<vtkStringArray> names;
+      names->SetName("PartNames");
+      for (const std::string& n : cad.partNames)
+      {
+        names->InsertNextValue(n);
+      }
+      fd->AddArray(names);
+      addFieldString(fd, "PartName", cad.partName);
+      addFieldString(fd, "LengthUnit", cad.lengthUnit);
+      addFieldString(fd, "SourceFormat", cad.format);
+      vtkNew<vtkIntArray> parts;
+      parts->SetName("NumberOfParts");
+      parts->InsertNextValue(cad.partCount);
+      fd->AddArray(parts);
+      this->NumberOfParts = cad.partCount;
+      this->SetLengthUnit(cad.lengthUnit.c_str());
+    },
+    [this](const std::string& message) { vtkErrorMacro(<< message); });
+  return read ? 1 : 0;
 }
 
 void vtkCADBoundaryReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -2,11 +2,7 @@
 
 #include "NURBSJson.h"
 #include "vtkMATBoundaryConversion.h"
-
-#include "common/InputError.h"
-
-#include <exception>
-#include <new>
+#include "vtkMATReaderErrors.h"
 
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
@@ -43,30 +39,17 @@ int vtkNURBSReader::RequestData(
   }
   std::stringstream text;
   text << in.rdbuf();
-  try
-  {
-    const exactmat::Shape shape = exactmat::parseNURBSJson(text.str(), this->FileName);
-    this->UpdateProgress(0.5);
-    exactmat::BoundaryGridBuilder builder;
-    builder.addShape(shape);
-    output->ShallowCopy(builder.grid());
-  }
-  catch (const exactmat::InputError& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "out of memory reading " << this->FileName);
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "internal error reading " << this->FileName << ": " << e.what());
-    return 0;
-  }
-  return 1;
+  const bool read = exactmat::readReportingErrors(
+    this->FileName,
+    [&] {
+      const exactmat::Shape shape = exactmat::parseNURBSJson(text.str(), this->FileName);
+      this->UpdateProgress(0.5);
+      exactmat::BoundaryGridBuilder builder;
+      builder.addShape(shape);
+      output->ShallowCopy(builder.grid());
+    },
+    [this](const std::string& message) { vtkErrorMacro(<< message); });
+  return read ? 1 : 0;
 }
 
 void vtkNURBSReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -8,6 +8,7 @@
 #include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
 
+#include "OCCTTestParts.h"
 #include "TestHelpers.h"
 
 #include "brep/Boundary3D.h"
@@ -253,38 +254,14 @@ double diagonalOf(vtkUnstructuredGrid* grid)
     (b[5] - b[4]) * (b[5] - b[4]));
 }
 
-// A planar profile bounded by a B-spline (a wave on top) and three lines.
-TopoDS_Face freeFormProfile()
-{
-  TColgp_Array1OfPnt poles(1, 5);
-  poles(1) = gp_Pnt(2, 0, 0);
-  poles(2) = gp_Pnt(2, 0.8, 0);
-  poles(3) = gp_Pnt(1.2, 1.4, 0);
-  poles(4) = gp_Pnt(0.5, 0.9, 0);
-  poles(5) = gp_Pnt(0.3, 1.2, 0);
-  TColStd_Array1OfReal knots(1, 3);
-  knots(1) = 0;
-  knots(2) = 0.5;
-  knots(3) = 1;
-  TColStd_Array1OfInteger mults(1, 3);
-  mults(1) = 4;
-  mults(2) = 1;
-  mults(3) = 4;
-  Handle(Geom_BSplineCurve) wave = new Geom_BSplineCurve(poles, knots, mults, 3);
-  BRepBuilderAPI_MakeWire wire;
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.3, 0, 0), gp_Pnt(2, 0, 0)));
-  wire.Add(BRepBuilderAPI_MakeEdge(wave));
-  wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0.3, 1.2, 0), gp_Pnt(0.3, 0, 0)));
-  return BRepBuilderAPI_MakeFace(wire.Wire());
-}
 
-// Area and volume of the extrusion of freeFormProfile() by `height`, from exact line integrals
+// Area and volume of the extrusion of exactmat::testparts::waveProfile() by `height`, from exact line integrals
 // over the profile's edges (Green: area = ∮ x dy), by Gauss points per knot span.
 Mass extrusionMass(double height)
 {
   std::vector<double> x, w;
   gauss(40, x, w);
-  const TopoDS_Face face = freeFormProfile();
+  const TopoDS_Face face = exactmat::testparts::waveProfile();
   double area = 0.0, perimeter = 0.0;
   for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
   {
@@ -405,9 +382,9 @@ std::map<std::string, TopoDS_Shape> solids()
     l.Close();
     s["l-prism"] = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(l.Wire()).Face(), gp_Vec(0, 0, 1)).Shape();
   }
-  s["free-form-extrusion"] = BRepPrimAPI_MakePrism(freeFormProfile(), gp_Vec(0, 0, 0.7)).Shape();
+  s["free-form-extrusion"] = BRepPrimAPI_MakePrism(exactmat::testparts::waveProfile(), gp_Vec(0, 0, 0.7)).Shape();
   s["free-form-revolution"] =
-    BRepPrimAPI_MakeRevol(freeFormProfile(), gp_Ax1(gp_Pnt(0, -0.5, 0), gp_Dir(1, 0, 0))).Shape();
+    BRepPrimAPI_MakeRevol(exactmat::testparts::waveProfile(), gp_Ax1(gp_Pnt(0, -0.5, 0), gp_Dir(1, 0, 0))).Shape();
   return s;
 }
 
