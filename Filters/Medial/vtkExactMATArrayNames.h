@@ -42,7 +42,14 @@
  * Verification (field data of every MAT output, when VerifyOutput is on):
  * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
  * `MaximumVerifiedError` (double: largest |distance to the exact boundary − Radius| / size),
- * `VerificationReport` (string: what failed and where, empty when passed).
+ * `VerificationReport` (string: what failed and where, empty when passed); and the
+ * filter's figures, one value each, named as its getters (`NumberOfSegments`,
+ * `TracingSeconds`, …).
+ *
+ * A collection's summary (field data of a composite output, one value per part; see
+ * vtkMATAlgorithm): `PartName`, `PartStatus` (int: 0 verified, 1 not verified, 2
+ * verification failed, 3 failed), `PartMessage`, `PartSeconds`, `MaximumVerifiedError` and
+ * every figure.
  */
 
 namespace exactmat
@@ -73,6 +80,10 @@ constexpr const char* SheetConvexEdges = "SheetConvexEdges";
 constexpr const char* VerificationStatus = "VerificationStatus";
 constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
 constexpr const char* VerificationReport = "VerificationReport";
+constexpr const char* PartName = "PartName";
+constexpr const char* PartStatus = "PartStatus";
+constexpr const char* PartMessage = "PartMessage";
+constexpr const char* PartSeconds = "PartSeconds";
 } // namespace arrays
 } // namespace exactmat
 

@@ -3,6 +3,8 @@
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
 #include "vtkMATComplexOutput.h"
+#include "vtkMATPartResult.h"
+#include "vtkMATThreads.h"
 #include "vtkMATVerificationReport.h"
 
 #include "brep/NormalisePieces.h"
@@ -36,12 +38,6 @@ vtkStandardNewMacro(vtkMAT25DFilter);
 vtkMAT25DFilter::vtkMAT25DFilter() = default;
 vtkMAT25DFilter::~vtkMAT25DFilter() = default;
 
-int vtkMAT25DFilter::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
-  return 1;
-}
-
 namespace
 {
 using namespace exactmat;
@@ -74,104 +70,86 @@ std::string governorNames(const Boundary2D& profile, const std::vector<int>& gov
 
 } // namespace
 
-int vtkMAT25DFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkMAT25DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output,
+  exactmat::PartResult& result, const std::function<void(double)>& progress) const
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->NumberOfJunctions = this->NumberOfSeams = this->NumberOfSkeletalEdges = 0;
-  this->NumberOfSheets = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
-  this->MaximumVerifiedError = this->ProfileSeconds = this->ConstructionSeconds = 0.0;
-  this->VerificationPassed = true;
-  try
+  exactmat::checkParameter("Length", this->Length, 0.0, std::numeric_limits<double>::max());
+  exactmat::checkParameter("Angle", this->Angle, 0.0, 360.0);
+  exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
+  exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
+  exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
+  exactmat::checkParameter("SheetResolution", this->SheetResolution, 1e-4, 0.5);
+  exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
+  if (exactmat::gridHasSurfaceCells(input))
   {
-    exactmat::checkParameter("Length", this->Length, 0.0, std::numeric_limits<double>::max());
-    exactmat::checkParameter("Angle", this->Angle, 0.0, 360.0);
-    exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
-    exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
-    exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
-    exactmat::checkParameter("SheetResolution", this->SheetResolution, 1e-4, 0.5);
-    exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
-    if (exactmat::gridHasSurfaceCells(input))
-    {
-      exactmat::fail("the input holds surface cells: vtkMAT25DFilter takes the profile "
-                     "curves of the solid (use vtkMAT3DFilter for solids given by surfaces)");
-    }
-    // The whole computation runs in the profile's unit frame (the sweep moved and scaled
-    // with it); writeComplex maps back.
-    const exactmat::Boundary2D profile =
-      exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
-    const exactmat::Normalisation& frame = profile.userFrame();
-    const exactmat::Sweep sweep = this->SweepType == Revolution
-      ? exactmat::Sweep::revolution(this->Angle, frame.toUnit(exactmat::Vec3(this->AxisOrigin)),
-          exactmat::Vec3(this->AxisDirection))
-      : exactmat::Sweep::extrusion(frame.lengthToUnit(this->Length));
-    const exactmat::SweepMap map(profile, sweep); // checks the sweep before any work
+    exactmat::fail("the input holds surface cells: vtkMAT25DFilter takes the profile "
+                   "curves of the solid (use vtkMAT3DFilter for solids given by surfaces)");
+  }
+  // The whole computation runs in the profile's unit frame (the sweep moved and scaled
+  // with it); writeComplex maps back.
+  const exactmat::Boundary2D profile =
+    exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
+  const exactmat::Normalisation& frame = profile.userFrame();
+  const exactmat::Sweep sweep = this->SweepType == Revolution
+    ? exactmat::Sweep::revolution(this->Angle, frame.toUnit(exactmat::Vec3(this->AxisOrigin)),
+        exactmat::Vec3(this->AxisDirection))
+    : exactmat::Sweep::extrusion(frame.lengthToUnit(this->Length));
+  const exactmat::SweepMap map(profile, sweep); // checks the sweep before any work
 
-    auto t0 = std::chrono::steady_clock::now();
-    const exactmat::Generators generators(profile);
-    exactmat::MAT2DOptions options;
-    options.tolerance = this->Tolerance;
-    options.fixedStep = this->FixedStep;
-    options.step = this->Step;
-    options.branchCheckStep = this->BranchCheckStep;
-    options.progress = [this](double f) { this->UpdateProgress(0.5 * f); };
-    const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
-    this->ProfileSeconds = secondsSince(t0);
+  auto t0 = std::chrono::steady_clock::now();
+  const exactmat::Generators generators(profile);
+  exactmat::MAT2DOptions options;
+  options.tolerance = this->Tolerance;
+  options.fixedStep = this->FixedStep;
+  options.step = this->Step;
+  options.branchCheckStep = this->BranchCheckStep;
+  options.progress = [&progress](double f) { progress(0.5 * f); };
+  const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
+  result.measure("ProfileSeconds", secondsSince(t0));
 
-    t0 = std::chrono::steady_clock::now();
-    exactmat::MAT25DOptions options3;
-    options3.sheetResolution = this->SheetResolution;
-    options3.progress = [this](double f) { this->UpdateProgress(0.5 + 0.3 * f); };
-    const exactmat::MedialComplex mat = exactmat::computeMAT25D(generators, graph, map, options3);
-    this->ConstructionSeconds = secondsSince(t0);
-    exactmat::writeMedialComplex(mat, frame,
-      [&profile](const exactmat::MedialElement& e) { return governorNames(profile, e.governors); }, true,
-      output);
+  t0 = std::chrono::steady_clock::now();
+  exactmat::MAT25DOptions options3;
+  options3.sheetResolution = this->SheetResolution;
+  options3.progress = [&progress](double f) { progress(0.5 + 0.3 * f); };
+  const exactmat::MedialComplex mat = exactmat::computeMAT25D(generators, graph, map, options3);
+  result.measure("ConstructionSeconds", secondsSince(t0));
+  exactmat::writeMedialComplex(mat, frame,
+    [&profile](const exactmat::MedialElement& e) { return governorNames(profile, e.governors); }, true,
+    output);
 
-    using ET = exactmat::MedialElementType;
-    this->NumberOfJunctions = mat.count(ET::Junction);
-    this->NumberOfSeams = mat.count(ET::Seam);
-    this->NumberOfSkeletalEdges = mat.count(ET::SkeletalEdge);
-    this->NumberOfSheets = mat.count(ET::SweptSheet) + mat.count(ET::ProfileSheet);
-    exactmat::VerificationOutcome outcome;
-    if (this->VerifyOutput)
-    {
-      const int sheetPoints = mat.countPoints(exactmat::MedialPoint3DType::Sheet) +
-        mat.countPoints(exactmat::MedialPoint3DType::ConvexEdge);
-      const int stride = this->MaximumSheetPointsVerified > 0
-        ? std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) /
-              this->MaximumSheetPointsVerified)
-        : VTK_INT_MAX;
-      const exactmat::SweptBoundary boundary(profile, map);
-      const exactmat::MedialVerification v = exactmat::verifyMedialComplex(boundary, mat, stride);
-      this->NumberOfVerifiedPoints = v.points;
-      this->MaximumVerifiedError = v.maxDistanceError;
-      this->NumberOfTouchpointMismatches = v.contactMismatches;
-      outcome = exactmat::outcomeOf(v, this->VerificationTolerance, mat, frame);
-      this->VerificationPassed = outcome.passed;
-      if (!outcome.passed)
-        vtkWarningMacro(<< "verification failed: " << outcome.report);
-    }
-    exactmat::attachVerification(output, outcome);
-    this->UpdateProgress(1.0);
-  }
-  catch (const exactmat::InputError& e)
+  using ET = exactmat::MedialElementType;
+  result.count("NumberOfJunctions", mat.count(ET::Junction));
+  result.count("NumberOfSeams", mat.count(ET::Seam));
+  result.count("NumberOfSkeletalEdges", mat.count(ET::SkeletalEdge));
+  result.count("NumberOfSheets", mat.count(ET::SweptSheet) + mat.count(ET::ProfileSheet));
+  if (this->VerifyOutput)
   {
-    vtkErrorMacro(<< e.what());
-    return 0;
+    const int sheetPoints = mat.countPoints(exactmat::MedialPoint3DType::Sheet) +
+      mat.countPoints(exactmat::MedialPoint3DType::ConvexEdge);
+    const int stride = this->MaximumSheetPointsVerified > 0
+      ? std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) /
+            this->MaximumSheetPointsVerified)
+      : VTK_INT_MAX;
+    const exactmat::SweptBoundary boundary(profile, map);
+    const exactmat::MedialVerification v =
+      exactmat::verifyMedialComplex(boundary, mat, stride, 1e-15, exactmat::smpParallelFor());
+    result.count("NumberOfVerifiedPoints", v.points);
+    result.count("NumberOfTouchpointMismatches", v.contactMismatches);
+    result.verification = exactmat::outcomeOf(v, this->VerificationTolerance, mat, frame);
   }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "out of memory: the input asks for more than this machine can hold");
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "internal error: " << e.what());
-    return 0;
-  }
-  return 1;
+}
+
+void vtkMAT25DFilter::PublishFigures(const exactmat::PartResult& figures)
+{
+  this->NumberOfJunctions = static_cast<int>(figures.get("NumberOfJunctions"));
+  this->NumberOfSeams = static_cast<int>(figures.get("NumberOfSeams"));
+  this->NumberOfSkeletalEdges = static_cast<int>(figures.get("NumberOfSkeletalEdges"));
+  this->NumberOfSheets = static_cast<int>(figures.get("NumberOfSheets"));
+  this->NumberOfVerifiedPoints = static_cast<int>(figures.get("NumberOfVerifiedPoints"));
+  this->NumberOfTouchpointMismatches =
+    static_cast<int>(figures.get("NumberOfTouchpointMismatches"));
+  this->ProfileSeconds = figures.get("ProfileSeconds");
+  this->ConstructionSeconds = figures.get("ConstructionSeconds");
 }
 
 void vtkMAT25DFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -190,9 +168,5 @@ void vtkMAT25DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Step: " << this->Step << "\n";
   os << indent << "BranchCheckStep: " << this->BranchCheckStep << "\n";
   os << indent << "SheetResolution: " << this->SheetResolution << "\n";
-  os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
-  os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
-  os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
-  os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

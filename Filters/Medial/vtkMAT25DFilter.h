@@ -44,13 +44,13 @@
 #define vtkMAT25DFilter_h
 
 #include "ExactMATFiltersMedialModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMATAlgorithm.h"
 
-class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT25DFilter : public vtkPolyDataAlgorithm
+class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT25DFilter : public vtkMATAlgorithm
 {
 public:
   static vtkMAT25DFilter* New();
-  vtkTypeMacro(vtkMAT25DFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMAT25DFilter, vtkMATAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum SweepTypes
@@ -106,39 +106,22 @@ public:
   ///@}
 
   ///@{
-  /// Verification against the exact swept boundary (default on), and how many sheet points
-  /// at most it checks (default 500; the curves' points are always all checked).
-  vtkSetMacro(VerifyOutput, bool);
-  vtkGetMacro(VerifyOutput, bool);
-  vtkBooleanMacro(VerifyOutput, bool);
+  /// How many sheet points at most the verification against the exact swept boundary
+  /// (vtkMATAlgorithm) checks (default 500; the curves' points are always all checked).
+  /// Every checked point must also have the number of touchpoints `Touchpoints` says.
   vtkSetClampMacro(MaximumSheetPointsVerified, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumSheetPointsVerified, int);
   ///@}
 
   ///@{
-  /**
-   * The verification's bound on |distance to the exact boundary − Radius| / size (default
-   * 1e-9); every checked point must also have the number of touchpoints `Touchpoints`
-   * says. When a check fails the filter warns (vtkWarningMacro, naming the worst point),
-   * VerificationPassed is false and the output's field data say so
-   * (`VerificationStatus` 0, `VerificationReport`); the output is still produced.
-   */
-  vtkSetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationPassed, bool);
-  ///@}
-
-  ///@{
-  /// Results of the last run: counts, the largest |distance to the boundary − Radius| over
-  /// the verified points divided by the solid's size, how many verified points have
-  /// another number of touchpoints than `Touchpoints` says, and the seconds spent on the
-  /// profile's 2D MAT and on the construction in 3D.
+  /// Results of the last run (sums over a collection's parts): counts, how many verified
+  /// points have another number of touchpoints than `Touchpoints` says, and the seconds
+  /// spent on the profile's 2D MAT and on the construction in 3D.
   vtkGetMacro(NumberOfJunctions, int);
   vtkGetMacro(NumberOfSeams, int);
   vtkGetMacro(NumberOfSkeletalEdges, int);
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
-  vtkGetMacro(MaximumVerifiedError, double);
   vtkGetMacro(NumberOfTouchpointMismatches, int);
   vtkGetMacro(ProfileSeconds, double);
   vtkGetMacro(ConstructionSeconds, double);
@@ -148,8 +131,9 @@ protected:
   vtkMAT25DFilter();
   ~vtkMAT25DFilter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output, exactmat::PartResult& result,
+    const std::function<void(double)>& progress) const override;
+  void PublishFigures(const exactmat::PartResult& figures) override;
 
   int SweepType = Extrusion;
   double Length = 3.0;
@@ -161,17 +145,13 @@ protected:
   double Step = 1e-3;
   double BranchCheckStep = 1e-2;
   double SheetResolution = 0.02;
-  bool VerifyOutput = true;
   int MaximumSheetPointsVerified = 500;
-  double VerificationTolerance = 1e-9;
-  bool VerificationPassed = true;
 
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
   int NumberOfSkeletalEdges = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
-  double MaximumVerifiedError = 0.0;
   int NumberOfTouchpointMismatches = 0;
   double ProfileSeconds = 0.0;
   double ConstructionSeconds = 0.0;

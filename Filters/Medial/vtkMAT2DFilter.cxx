@@ -2,6 +2,8 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATPartResult.h"
+#include "vtkMATThreads.h"
 #include "vtkMATVerificationReport.h"
 
 #include "brep/NormalisePieces.h"
@@ -32,12 +34,6 @@ vtkStandardNewMacro(vtkMAT2DFilter);
 
 vtkMAT2DFilter::vtkMAT2DFilter() = default;
 vtkMAT2DFilter::~vtkMAT2DFilter() = default;
-
-int vtkMAT2DFilter::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
-  return 1;
-}
 
 namespace
 {
@@ -140,84 +136,67 @@ private:
 };
 } // namespace
 
-int vtkMAT2DFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkMAT2DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output,
+  exactmat::PartResult& result, const std::function<void(double)>& progress) const
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  this->NumberOfSegments = this->NumberOfBranchPoints = this->NumberOfEndPoints = 0;
-  this->MaximumVerifiedError = 0.0;
-  this->VerificationPassed = true;
-  this->TracingSeconds = this->VerificationSeconds = 0.0;
   auto t0 = std::chrono::steady_clock::now();
   auto secondsSince = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
-  try
+  exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
+  exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
+  exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
+  exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
+  if (exactmat::gridHasSurfaceCells(input))
   {
-    exactmat::checkParameter("Tolerance", this->Tolerance, 1e-12, 1e-1);
-    exactmat::checkParameter("Step", this->Step, 1e-9, 1e-1);
-    exactmat::checkParameter("BranchCheckStep", this->BranchCheckStep, 1e-9, 1.0);
-    exactmat::checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
-    if (exactmat::gridHasSurfaceCells(input))
-    {
-      exactmat::fail("the input holds surface cells: vtkMAT2DFilter takes the boundary "
-                     "curves of a planar domain (use vtkMAT3DFilter for solids)");
-    }
-    // The whole computation runs in the unit frame; GraphWriter maps back.
-    const exactmat::Boundary2D boundary =
-      exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
-    const exactmat::Generators generators(boundary);
-    exactmat::MAT2DOptions options;
-    options.tolerance = this->Tolerance;
-    options.fixedStep = this->FixedStep;
-    options.step = this->Step;
-    options.branchCheckStep = this->BranchCheckStep;
-    options.progress = [this](double f) { this->UpdateProgress(0.9 * f); };
-    const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
-    GraphWriter(generators, boundary).write(graph, output);
-    this->TracingSeconds = secondsSince(t0);
-    t0 = std::chrono::steady_clock::now();
-    this->NumberOfSegments = static_cast<int>(graph.segments.size());
-    this->NumberOfBranchPoints = graph.count(exactmat::MedialPointType::Branch);
-    this->NumberOfEndPoints = graph.count(exactmat::MedialPointType::ConvexVertexEnd) +
+    exactmat::fail("the input holds surface cells: vtkMAT2DFilter takes the boundary "
+                   "curves of a planar domain (use vtkMAT3DFilter for solids)");
+  }
+  // The whole computation runs in the unit frame; GraphWriter maps back.
+  const exactmat::Boundary2D boundary =
+    exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
+  const exactmat::Generators generators(boundary);
+  exactmat::MAT2DOptions options;
+  options.tolerance = this->Tolerance;
+  options.fixedStep = this->FixedStep;
+  options.step = this->Step;
+  options.branchCheckStep = this->BranchCheckStep;
+  options.progress = [&progress](double f) { progress(0.9 * f); };
+  const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
+  GraphWriter(generators, boundary).write(graph, output);
+  result.count("NumberOfSegments", static_cast<int>(graph.segments.size()));
+  result.count("NumberOfBranchPoints", graph.count(exactmat::MedialPointType::Branch));
+  result.count("NumberOfEndPoints",
+    graph.count(exactmat::MedialPointType::ConvexVertexEnd) +
       graph.count(exactmat::MedialPointType::CurvatureCentreEnd) +
-      graph.count(exactmat::MedialPointType::CircleCentre);
-    exactmat::VerificationOutcome outcome;
-    if (this->VerifyOutput)
+      graph.count(exactmat::MedialPointType::CircleCentre));
+  result.measure("TracingSeconds", secondsSince(t0));
+  t0 = std::chrono::steady_clock::now();
+  exactmat::VerificationOutcome& outcome = result.verification;
+  if (this->VerifyOutput)
+  {
+    const exactmat::MAT2DVerification v =
+      exactmat::verifyMAT2D(generators, graph, exactmat::smpParallelFor());
+    outcome.run = true;
+    outcome.maximumError = v.maxDistanceError;
+    outcome.passed = v.ok(this->VerificationTolerance);
+    if (!outcome.passed)
     {
-      const exactmat::MAT2DVerification v = exactmat::verifyMAT2D(generators, graph);
-      outcome.run = true;
-      outcome.maximumError = this->MaximumVerifiedError = v.maxDistanceError;
-      outcome.passed = this->VerificationPassed = v.ok(this->VerificationTolerance);
-      if (!outcome.passed)
-      {
-        outcome.report = v.problems(this->VerificationTolerance) + " (largest error at " +
-          exactmat::format(boundary.userPoint(v.worstPoint)) + ", Radius " +
-          exactmat::format(boundary.userLength(v.worstRadius)) + ")";
-        vtkWarningMacro(<< "verification failed: " << outcome.report);
-      }
+      outcome.report = v.problems(this->VerificationTolerance) + " (largest error at " +
+        exactmat::format(boundary.userPoint(v.worstPoint)) + ", Radius " +
+        exactmat::format(boundary.userLength(v.worstRadius)) + ")";
     }
-    exactmat::attachVerification(output, outcome);
-    this->VerificationSeconds = secondsSince(t0);
-    this->UpdateProgress(1.0);
   }
-  catch (const exactmat::InputError& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro(<< "out of memory: the input asks for more than this machine can hold");
-    return 0;
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< "internal error: " << e.what());
-    return 0;
-  }
-  return 1;
+  result.measure("VerificationSeconds", secondsSince(t0));
+}
+
+void vtkMAT2DFilter::PublishFigures(const exactmat::PartResult& figures)
+{
+  this->NumberOfSegments = static_cast<int>(figures.get("NumberOfSegments"));
+  this->NumberOfBranchPoints = static_cast<int>(figures.get("NumberOfBranchPoints"));
+  this->NumberOfEndPoints = static_cast<int>(figures.get("NumberOfEndPoints"));
+  this->TracingSeconds = figures.get("TracingSeconds");
+  this->VerificationSeconds = figures.get("VerificationSeconds");
 }
 
 void vtkMAT2DFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -227,10 +206,6 @@ void vtkMAT2DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FixedStep: " << this->FixedStep << "\n";
   os << indent << "Step: " << this->Step << "\n";
   os << indent << "BranchCheckStep: " << this->BranchCheckStep << "\n";
-  os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
   os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
   os << indent << "NumberOfBranchPoints: " << this->NumberOfBranchPoints << "\n";
-  os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
-  os << indent << "MaximumVerifiedError: " << this->MaximumVerifiedError << "\n";
-  os << indent << "VerificationPassed: " << this->VerificationPassed << "\n";
 }

@@ -28,13 +28,13 @@
 #define vtkMAT2DFilter_h
 
 #include "ExactMATFiltersMedialModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMATAlgorithm.h"
 
-class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT2DFilter : public vtkPolyDataAlgorithm
+class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT2DFilter : public vtkMATAlgorithm
 {
 public:
   static vtkMAT2DFilter* New();
-  vtkTypeMacro(vtkMAT2DFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMAT2DFilter, vtkMATAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -62,54 +62,34 @@ public:
   ///@}
 
   ///@{
-  /// Results of the last run: the numbers of segments, branch points and MAT points, and
-  /// the largest |distance to the boundary − Radius| over all points divided by the domain
-  /// size (computed only when VerifyOutput is on; default on).
+  /// Results of the last run (sums over a collection's parts): the numbers of segments,
+  /// branch points and end points. The verification (vtkMATAlgorithm) also checks
+  /// footpoint counts, that the footpoints sweep the boundary once, one connected component
+  /// per connected domain and cycles = holes.
   vtkGetMacro(NumberOfSegments, int);
   vtkGetMacro(NumberOfBranchPoints, int);
   vtkGetMacro(NumberOfEndPoints, int);
-  vtkGetMacro(MaximumVerifiedError, double);
   /// Seconds spent on tracing (boundary set-up included) and on the verification.
   vtkGetMacro(TracingSeconds, double);
   vtkGetMacro(VerificationSeconds, double);
-  vtkSetMacro(VerifyOutput, bool);
-  vtkGetMacro(VerifyOutput, bool);
-  vtkBooleanMacro(VerifyOutput, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The self-verification's bound on |distance to the exact boundary − Radius| / size
-   * (default 1e-9). The run also checks footpoint counts, that the footpoints sweep the
-   * boundary once, one connected component per connected domain and cycles = holes.
-   * When a check fails the filter warns (vtkWarningMacro, naming the worst point),
-   * VerificationPassed is false and the output's field data say so
-   * (`VerificationStatus` 0, `VerificationReport`); the output is still produced.
-   */
-  vtkSetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationPassed, bool);
   ///@}
 
 protected:
   vtkMAT2DFilter();
   ~vtkMAT2DFilter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output, exactmat::PartResult& result,
+    const std::function<void(double)>& progress) const override;
+  void PublishFigures(const exactmat::PartResult& figures) override;
 
   double Tolerance = 1e-4;
   bool FixedStep = false;
   double Step = 1e-3;
   double BranchCheckStep = 1e-2;
-  bool VerifyOutput = true;
-  double VerificationTolerance = 1e-9;
 
   int NumberOfSegments = 0;
   int NumberOfBranchPoints = 0;
   int NumberOfEndPoints = 0;
-  double MaximumVerifiedError = 0.0;
-  bool VerificationPassed = true;
   double TracingSeconds = 0.0;
   double VerificationSeconds = 0.0;
 

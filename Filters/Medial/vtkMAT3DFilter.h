@@ -42,13 +42,13 @@
 #define vtkMAT3DFilter_h
 
 #include "ExactMATFiltersMedialModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMATAlgorithm.h"
 
-class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT3DFilter : public vtkPolyDataAlgorithm
+class EXACTMATFILTERSMEDIAL_EXPORT vtkMAT3DFilter : public vtkMATAlgorithm
 {
 public:
   static vtkMAT3DFilter* New();
-  vtkTypeMacro(vtkMAT3DFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMAT3DFilter, vtkMATAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -79,18 +79,7 @@ public:
   ///@}
 
   ///@{
-  /// Verification against the exact boundary (default on) and its bound on |distance −
-  /// Radius| / size (default 1e-9).
-  vtkSetMacro(VerifyOutput, bool);
-  vtkGetMacro(VerifyOutput, bool);
-  vtkBooleanMacro(VerifyOutput, bool);
-  vtkSetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationTolerance, double);
-  vtkGetMacro(VerificationPassed, bool);
-  ///@}
-
-  ///@{
-  /// Results of the last run.
+  /// Results of the last run (sums over a collection's parts).
   vtkGetMacro(NumberOfJunctions, int);
   vtkGetMacro(NumberOfSeams, int);
   /// Rims: skeletal edges where a sheet of two reflex edges closes at their common corner.
@@ -100,7 +89,6 @@ public:
   vtkGetMacro(NumberOfTopologyProblems, int);
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
-  vtkGetMacro(MaximumVerifiedError, double);
   vtkGetMacro(NumberOfTouchpointMismatches, int);
   vtkGetMacro(TracingSeconds, double);
   vtkGetMacro(VerificationSeconds, double);
@@ -110,24 +98,21 @@ protected:
   vtkMAT3DFilter();
   ~vtkMAT3DFilter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  void ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output, exactmat::PartResult& result,
+    const std::function<void(double)>& progress) const override;
+  void PublishFigures(const exactmat::PartResult& figures) override;
 
   double Tolerance = 1e-4;
   double MaximumStep = 0.05;
   bool FixedStep = false;
   double Step = 1e-3;
   double JunctionCheckStep = 1e-2;
-  bool VerifyOutput = true;
-  double VerificationTolerance = 1e-9;
-  bool VerificationPassed = true;
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
   int NumberOfSkeletalEdges = 0;
   int NumberOfTopologyProblems = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
-  double MaximumVerifiedError = 0.0;
   int NumberOfTouchpointMismatches = 0;
   double TracingSeconds = 0.0;
   double VerificationSeconds = 0.0;

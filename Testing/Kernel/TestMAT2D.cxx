@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <thread>
 
 using namespace exactmat;
 
@@ -263,4 +264,34 @@ TEST(MAT2D, ProgressReachesOne)
   ASSERT_FALSE(seen.empty());
   EXPECT_NEAR(seen.back(), 1.0, 1e-6);
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+}
+
+// The verification's figures do not depend on how its points are shared among threads:
+// a runner that gives out small ranges, last first, on threads of its own.
+TEST(MAT2DVerification, AnyParallelRunnerGivesTheSequentialFigures)
+{
+  const ParallelFor scrambled = [](std::size_t n,
+                                  const std::function<void(std::size_t, std::size_t)>& body) {
+    std::vector<std::thread> threads;
+    for (std::size_t end = n; end > 0;)
+    {
+      const std::size_t begin = end > 7 ? end - 7 : 0;
+      threads.emplace_back([&body, begin, end]() { body(begin, end); });
+      end = begin;
+    }
+    for (std::thread& t : threads)
+      t.join();
+  };
+  for (const char* name : { "plate-with-holes", "star", "ellipse" })
+  {
+    const TracedMAT r = runShape(name);
+    const MAT2DVerification a = verifyMAT2D(*r.generators, r.graph);
+    const MAT2DVerification b = verifyMAT2D(*r.generators, r.graph, scrambled);
+    EXPECT_EQ(a.points, b.points) << name;
+    EXPECT_EQ(a.maxDistanceError, b.maxDistanceError) << name;
+    EXPECT_EQ(a.worstPoint, b.worstPoint) << name;
+    EXPECT_EQ(a.footpointShortfalls, b.footpointShortfalls) << name;
+    EXPECT_EQ(a.uncovered, b.uncovered) << name;
+    EXPECT_GT(a.points, 20) << name;
+  }
 }

@@ -31,31 +31,26 @@ void sweep(const Generators& G, std::vector<std::vector<std::pair<double, double
 }
 } // namespace
 
-MAT2DVerification verifyMAT2D(const Generators& G, const MedialGraph& graph)
+MAT2DVerification verifyMAT2D(
+  const Generators& G, const MedialGraph& graph, const ParallelFor& parallel)
 {
   MAT2DVerification v;
   const double L = G.size2D();
-  auto checkPoint = [&](const Vec2& x, double r, int minFootpoints) {
-    ++v.points;
-    const double error = std::abs(G.distance(x) - r) / L;
-    if (!(error <= v.maxDistanceError)) // NaN counts as the worst
-    {
-      v.maxDistanceError = std::isnan(error) ? std::numeric_limits<double>::infinity() : error;
-      v.worstPoint = x;
-      v.worstRadius = r;
-    }
-    if (minFootpoints > 0 && r > 1e-6 * L)
-    {
-      const auto f = G.footpointsWithin(x, r * (1.0 + 1e-6) + 1e-9 * L);
-      const bool continuum = std::any_of(f.begin(), f.end(), [](const BoundaryLocation& b) { return b.continuum; });
-      if (!continuum && static_cast<int>(f.size()) < minFootpoints)
-        ++v.footpointShortfalls;
-    }
+  // The points to check, in output order; checked independently (possibly on several
+  // threads), then reduced in this order so the figures do not depend on the threads.
+  struct Check
+  {
+    Vec2 x;
+    double r;
+    int minFootpoints;
+    double error = 0.0;
+    bool shortfall = false;
   };
+  std::vector<Check> checks;
   std::vector<std::vector<std::pair<double, double>>> swept(G.size());
   for (const MedialNode& n : graph.nodes)
   {
-    checkPoint(n.sample.x, n.sample.radius, n.type == MedialPointType::Branch ? 3 : 0);
+    checks.push_back({ n.sample.x, n.sample.radius, n.type == MedialPointType::Branch ? 3 : 0 });
     for (const BoundaryLocation& f : n.footpoints)
       if (f.continuum || n.type == MedialPointType::CircleCentre)
         swept[f.g].push_back({ 0.0, 1.0 });
@@ -63,12 +58,37 @@ MAT2DVerification verifyMAT2D(const Generators& G, const MedialGraph& graph)
   for (const MedialSegment& s : graph.segments)
   {
     for (size_t i = 1; i + 1 < s.samples.size(); ++i)
-      checkPoint(s.samples[i].x, s.samples[i].radius, 2);
+      checks.push_back({ s.samples[i].x, s.samples[i].radius, 2 });
     for (size_t i = 0; i + 1 < s.samples.size(); ++i)
     {
       sweep(G, swept, s.samples[i].foot[0], s.samples[i + 1].foot[0], +1);
       sweep(G, swept, s.samples[i].foot[1], s.samples[i + 1].foot[1], -1);
     }
+  }
+  parallel(checks.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      Check& c = checks[i];
+      c.error = std::abs(G.distance(c.x) - c.r) / L;
+      if (c.minFootpoints > 0 && c.r > 1e-6 * L)
+      {
+        const auto f = G.footpointsWithin(c.x, c.r * (1.0 + 1e-6) + 1e-9 * L);
+        const bool continuum = std::any_of(
+          f.begin(), f.end(), [](const BoundaryLocation& b) { return b.continuum; });
+        c.shortfall = !continuum && static_cast<int>(f.size()) < c.minFootpoints;
+      }
+    }
+  });
+  for (const Check& c : checks)
+  {
+    ++v.points;
+    if (!(c.error <= v.maxDistanceError)) // NaN counts as the worst
+    {
+      v.maxDistanceError = std::isnan(c.error) ? std::numeric_limits<double>::infinity() : c.error;
+      v.worstPoint = c.x;
+      v.worstRadius = c.r;
+    }
+    v.footpointShortfalls += c.shortfall ? 1 : 0;
   }
   for (int g = 0; g < G.size(); ++g)
   {

@@ -4,6 +4,7 @@
 /// solves (DESIGN.md §4): global distance = radius, footpoint counts, coverage of the
 /// boundary by the footpoints, cycles = holes.
 
+#include "common/ParallelFor.h"
 #include "mat2d/MedialGraph.h"
 
 #include <string>
@@ -38,6 +39,9 @@ struct MAT2DVerification
   std::string problems(double distanceTolerance) const;
 };
 
-MAT2DVerification verifyMAT2D(const Generators& generators, const MedialGraph& graph);
+/// `parallel` runs the per-point checks (distance, footpoints); the figures are the same
+/// whichever runner is given.
+MAT2DVerification verifyMAT2D(const Generators& generators, const MedialGraph& graph,
+  const ParallelFor& parallel = sequentialFor);
 
 } // namespace exactmat

@@ -4,20 +4,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace exactmat
 {
 
-MedialVerification verifyMedialComplex(
-  const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride, double inputRounding)
+MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const MedialComplex& mat,
+  int sheetStride, double inputRounding, const ParallelFor& parallel)
 {
   MedialVerification v;
   const double size = boundary.size();
   const int n = static_cast<int>(mat.points.size());
-  int sheetPoints = 0;
   v.aspect = boundary.aspect();
   if (!v.contactsCounted())
     return v;
+  // The points to check, chosen in order; checked independently (possibly on several
+  // threads), then reduced in this order so the figures do not depend on the threads.
+  std::vector<int> chosen;
+  int sheetPoints = 0;
   for (int i = 0; i < n; ++i)
   {
     const MedialPoint3D& p = mat.points[i];
@@ -25,25 +29,36 @@ MedialVerification verifyMedialComplex(
       p.type == MedialPoint3DType::Sheet || p.type == MedialPoint3DType::ConvexEdge;
     if (sheet && sheetPoints++ % std::max(1, sheetStride) != 0)
       continue;
-    ++v.points;
-    const double error = std::abs(boundary.distance(p.x) - p.radius) / size;
-    if (!(error <= v.maxDistanceError))
+    chosen.push_back(i);
+  }
+  std::vector<double> error(chosen.size(), 0.0);
+  std::vector<int> count(chosen.size(), -1);
+  parallel(chosen.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      v.maxDistanceError = std::isnan(error) ? INFINITY : error;
+      const MedialPoint3D& p = mat.points[chosen[k]];
+      error[k] = std::abs(boundary.distance(p.x) - p.radius) / size;
+      if (p.contacts > 0)
+        count[k] = static_cast<int>(
+          boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size).size());
+    }
+  });
+  for (std::size_t k = 0; k < chosen.size(); ++k)
+  {
+    const int i = chosen[k];
+    ++v.points;
+    if (!(error[k] <= v.maxDistanceError))
+    {
+      v.maxDistanceError = std::isnan(error[k]) ? INFINITY : error[k];
       v.worstPoint = i;
     }
-    if (p.contacts <= 0)
+    if (mat.points[i].contacts <= 0)
       continue;
     ++v.contactsChecked;
-    const int count = static_cast<int>(
-      boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size).size());
-    if (count != p.contacts)
+    if (count[k] != mat.points[i].contacts && v.contactMismatches++ == 0)
     {
-      if (v.contactMismatches++ == 0)
-      {
-        v.firstMismatch = i;
-        v.firstMismatchCount = count;
-      }
+      v.firstMismatch = i;
+      v.firstMismatchCount = count[k];
     }
   }
   return v;

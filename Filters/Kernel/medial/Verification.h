@@ -5,6 +5,7 @@
 /// point, and the number of distinct touchpoints of every ball that has a finite number
 /// of them.
 
+#include "common/ParallelFor.h"
 #include "medial/MedialComplex.h"
 #include "medial/SolidBoundary.h"
 
@@ -47,8 +48,9 @@ struct MedialVerification
 /// than the solid (a 1e-12 thin sheet, a 1e12 long bar) are counted at their own scale,
 /// plus what the input is known to (a part far from the origin: its coordinates' rounding,
 /// Normalisation::inputRounding, against which a tiny ball's touchpoints cannot be told).
+/// `parallel` runs the per-point queries; the figures are the same whichever runner is given.
 MedialVerification verifyMedialComplex(
   const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1,
-  double inputRounding = 1e-15);
+  double inputRounding = 1e-15, const ParallelFor& parallel = sequentialFor);
 
 } // namespace exactmat
