@@ -10,6 +10,7 @@
 // INPUT is a .vtu of (rational) Bézier cells, ExactMAT's .json NURBS format, or a STEP /
 // IGES part (read exactly); without one, the bundled catalogue shape plate-with-holes (or
 // --shape NAME) is used.
+#include "Batch.h"
 #include "MATPicture.h"
 
 #include "vtkCADBoundaryReader.h"
@@ -74,6 +75,8 @@ const char* Usage = R"(usage:
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
               [--max-step H] [--png OUT.png] [--shape NAME] [--verify-tolerance V]
+  exactmat batch FILE|FOLDER... [-o DIR] [-j N] [--mode auto|2d|3d|extrude|revolve]
+                 [the options of that mode]
   exactmat shapes          list the bundled shapes
 
   INPUT          boundary curves: a .vtu of Bezier cells, ExactMAT .json NURBS, or a
@@ -90,6 +93,7 @@ const char* Usage = R"(usage:
                  exactmat-2d.png, exactmat-3d.png, ... after the command)
   --verify-tolerance V  the self-verification's bound on |distance - radius| / size
                  (default 1e-9); a failed verification exits with 3
+  -j, --threads N  threads (0, the default: every core; 1: this thread only)
   -h, --help     this text
 
   exit codes: 0 done and verified, 1 invalid input (or the MAT cannot be computed),
@@ -112,6 +116,18 @@ const char* Usage = R"(usage:
   --step S       fixed steps of S x solid size along the seams, as in the thesis (junction
                  check every B, default 10 S)
   OUT.vtp defaults to exactmat-3d.vtp
+
+  batch: every part file given, and every .vtu/.json/.step/.stp/.iges/.igs file of every
+  folder given, through one filter, N parts at a time (-j), with a progress bar. Writes
+  DIR/NAME.vtp per part (NAME: the file's name without extension), DIR/index.pvd (open it in
+  ParaView: every part as one collection) and DIR/summary.csv (part, file, mode, status,
+  segments_or_seams, branch_points_or_junctions, points, seconds, verified_error, message).
+  A part that cannot be read or computed is reported by name; the others are computed.
+  --mode M       auto (default: 2d or 3d by the part's cells), 2d, 3d, extrude (needs
+                 --length), revolve (needs --axis PX,PY,PZ,DX,DY,DZ)
+  DIR defaults to exactmat-batch; exit 1 if a part failed, else 3 if a part's
+  verification failed. On a cluster: Wrapping/Python/exactmat/batch.py under
+  mpiexec -n N pvbatch --mpi --symmetric (see the README).
 )";
 
 struct Arguments
@@ -123,6 +139,9 @@ struct Arguments
   int part = 0; ///< solid or face of a STEP/IGES input
   std::string partName; ///< or its name in the file
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
+  int threads = 0;          ///< -j: 0 every core
+  std::vector<std::string> inputs; ///< batch: files and folders
+  std::string mode = "auto";       ///< batch: the filter (auto: 2d or 3d by the cells)
 };
 
 [[noreturn]] void usageError(const std::string& message)
@@ -232,6 +251,21 @@ Arguments parse(int argc, char* argv[])
       a.verifyTolerance = number(arg, value());
     else if (arg == "--sheet-resolution")
       a.sheetResolution = number(arg, value());
+    else if (arg == "-j" || arg == "--threads")
+    {
+      const char* text = value();
+      char* end = nullptr;
+      const long n = std::strtol(text, &end, 10);
+      if (!text[0] || *end || n < 0 || n > 4096)
+        usageError(arg + " needs a number of threads (0: every core), got '" + text + "'");
+      a.threads = static_cast<int>(n);
+    }
+    else if (arg == "--mode" && a.command == "batch")
+    {
+      a.mode = value();
+      if (a.mode != "auto" && a.mode != "2d" && a.mode != "3d" && a.mode != "extrude" && a.mode != "revolve")
+        usageError("--mode needs auto, 2d, 3d, extrude or revolve, got '" + a.mode + "'");
+    }
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << Usage;
@@ -239,13 +273,15 @@ Arguments parse(int argc, char* argv[])
     }
     else if (!arg.empty() && arg[0] == '-')
       usageError("unknown option " + arg);
+    else if (a.command == "batch")
+      a.inputs.push_back(arg);
     else if (a.input.empty())
       a.input = arg;
     else
       usageError("more than one INPUT");
   }
   if (a.output.empty())
-    a.output = "exactmat-" + a.command + ".vtp";
+    a.output = a.command == "batch" ? "exactmat-batch" : "exactmat-" + a.command + ".vtp";
   if (a.command == "3d" && !a.shapeGiven)
     a.shape = "pillow"; // the bundled free-form solid
   return a;
@@ -269,11 +305,18 @@ public:
       m = m.substr(colon + 3);
     while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
       m.pop_back();
+    report(m);
+  }
+  /// An error found by this program (not a VTK object): printed and counted the same way.
+  void report(const std::string& m)
+  {
     if (!Quiet)
       std::cerr << "exactmat: error: " << m << "\n";
+    Message = m;
     Failed = true;
   }
   bool Failed = false;
+  std::string Message; ///< the last error
   bool Quiet = false; ///< count the error, the caller words it
 };
 
@@ -300,12 +343,45 @@ void setProfileSteps(Filter* mat, const Arguments& a)
 {
   mat->SetTolerance(a.tolerance);
   mat->SetVerificationTolerance(a.verifyTolerance);
+  mat->SetNumberOfThreads(a.threads);
   if (a.step > 0.0)
   {
     mat->FixedStepOn();
     mat->SetStep(a.step);
     mat->SetBranchCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
   }
+}
+
+// The swept filter from the command line; `axis`: the revolution axis' point and direction.
+void configure25D(vtkMAT25DFilter* mat, const Arguments& a, const std::string& command, const double axis[6])
+{
+  if (command == "revolve")
+  {
+    mat->SetSweepTypeToRevolution();
+    mat->SetAngle(a.angle);
+    mat->SetAxisOrigin(axis[0], axis[1], axis[2]);
+    mat->SetAxisDirection(axis[3], axis[4], axis[5]);
+  }
+  else
+  {
+    mat->SetLength(a.length);
+  }
+  setProfileSteps(mat, a);
+  mat->SetSheetResolution(a.sheetResolution);
+}
+
+void configure3D(vtkMAT3DFilter* mat, const Arguments& a)
+{
+  mat->SetTolerance(a.tolerance);
+  mat->SetMaximumStep(a.maxStep);
+  if (a.step > 0.0)
+  {
+    mat->FixedStepOn();
+    mat->SetStep(a.step);
+    mat->SetJunctionCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
+  }
+  mat->SetVerificationTolerance(a.verifyTolerance);
+  mat->SetNumberOfThreads(a.threads);
 }
 
 bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors)
@@ -408,7 +484,8 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
       r->SetPartName(a.partName.c_str());
     r->AddObserver(vtkCommand::ErrorEvent, errors);
     vtkNew<WarningLine> warnings;
-    r->AddObserver(vtkCommand::WarningEvent, warnings);
+    if (!errors->Quiet)
+      r->AddObserver(vtkCommand::WarningEvent, warnings);
     r->Update();
     if (errors->Failed)
       return nullptr;
@@ -426,7 +503,7 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     const std::string why = whyNotVTU(a.input);
     if (!why.empty())
     {
-      std::cerr << "exactmat: error: " << why << "\n";
+      errors->report(why);
       return nullptr;
     }
     // VTK's parse errors are replaced by one that names the file.
@@ -438,8 +515,7 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
     r->Update();
     if (parseErrors->Failed || r->GetErrorCode() != vtkErrorCode::NoError)
     {
-      std::cerr << "exactmat: error: '" << a.input
-                << "' is not a readable VTK XML UnstructuredGrid (truncated or corrupt)\n";
+      errors->report("'" + a.input + "' is not a readable VTK XML UnstructuredGrid (truncated or corrupt)");
       return nullptr;
     }
     label = a.input;
@@ -447,8 +523,7 @@ vtkSmartPointer<vtkUnstructuredGrid> loadBoundary(const Arguments& a, ErrorLine*
   }
   else
   {
-    std::cerr << "exactmat: error: '" << a.input
-              << "' is none of .vtu, .json, .step/.stp, .iges/.igs\n";
+    errors->report("'" + a.input + "' is none of .vtu, .json, .step/.stp, .iges/.igs");
     return nullptr;
   }
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
@@ -577,19 +652,7 @@ int run25D(const Arguments& a)
 
   vtkNew<vtkMAT25DFilter> mat;
   mat->SetInputData(profile);
-  if (revolve)
-  {
-    mat->SetSweepTypeToRevolution();
-    mat->SetAngle(a.angle);
-    mat->SetAxisOrigin(axis);
-    mat->SetAxisDirection(axis + 3);
-  }
-  else
-  {
-    mat->SetLength(a.length);
-  }
-  setProfileSteps(mat.GetPointer(), a);
-  mat->SetSheetResolution(a.sheetResolution);
+  configure25D(mat, a, a.command, axis);
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<WarningLine> warnings;
   mat->AddObserver(vtkCommand::WarningEvent, warnings);
@@ -681,15 +744,7 @@ int run3D(const Arguments& a)
     return ExitInputError;
   vtkNew<vtkMAT3DFilter> mat;
   mat->SetInputData(solid);
-  mat->SetTolerance(a.tolerance);
-  mat->SetMaximumStep(a.maxStep);
-  if (a.step > 0.0)
-  {
-    mat->FixedStepOn();
-    mat->SetStep(a.step);
-    mat->SetJunctionCheckStep(a.branchStep > 0.0 ? a.branchStep : 10.0 * a.step);
-  }
-  mat->SetVerificationTolerance(a.verifyTolerance);
+  configure3D(mat, a);
   mat->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<WarningLine> warnings;
   mat->AddObserver(vtkCommand::WarningEvent, warnings);
@@ -737,6 +792,56 @@ int run3D(const Arguments& a)
   }
   return mat->GetVerificationPassed() ? 0 : ExitVerification;
 }
+int runBatch(const Arguments& a)
+{
+  if (a.inputs.empty())
+    usageError("batch needs part files or folders");
+  if (a.mode == "extrude" && a.length <= 0.0)
+    usageError("batch --mode extrude needs --length L");
+  if (a.mode == "revolve" && a.axis.size() != 6)
+    usageError("batch --mode revolve needs --axis PX,PY,PZ,DX,DY,DZ (one axis for every part)");
+  exactmat::BatchJob job;
+  job.inputs = a.inputs;
+  job.outputDir = a.output;
+  job.mode = a.mode;
+  job.threads = a.threads;
+  job.load = [&a](const std::string& file, const std::string& mode, std::string& error) {
+    Arguments one = a;
+    one.input = file;
+    one.command = mode == "extrude" || mode == "revolve" ? "2d" : mode;
+    vtkNew<ErrorLine> errors;
+    errors->Quiet = true;
+    std::string label;
+    vtkSmartPointer<vtkUnstructuredGrid> grid = loadBoundary(one, errors, label);
+    if (!grid || errors->Failed)
+    {
+      error = errors->Message.empty() ? "cannot be read" : errors->Message;
+      return vtkSmartPointer<vtkUnstructuredGrid>();
+    }
+    return grid;
+  };
+  job.makeFilter = [&a](const std::string& mode) -> vtkSmartPointer<vtkMATAlgorithm> {
+    if (mode == "3d")
+    {
+      auto f = vtkSmartPointer<vtkMAT3DFilter>::New();
+      configure3D(f, a);
+      return f;
+    }
+    if (mode == "extrude" || mode == "revolve")
+    {
+      auto f = vtkSmartPointer<vtkMAT25DFilter>::New();
+      double axis[6] = { 0, 0, 0, 0, 1, 0 };
+      for (size_t i = 0; i < a.axis.size() && i < 6; ++i)
+        axis[i] = a.axis[i];
+      configure25D(f, a, mode, axis);
+      return f;
+    }
+    auto f = vtkSmartPointer<vtkMAT2DFilter>::New();
+    setProfileSteps(f.GetPointer(), a);
+    return f;
+  };
+  return exactmat::runBatch(job);
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -752,9 +857,11 @@ int main(int argc, char* argv[])
       std::cout << vtkNURBSSource::GetCatalogueShapeName(i) << "\n";
     return 0;
   }
+  if (a.command == "batch")
+    return runBatch(a);
   if (a.command != "2d" && a.command != "3d" && a.command != "extrude" && a.command != "revolve" &&
     a.command != "auto")
-    usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, shapes; or give " +
+    usageError("unknown command '" + a.command + "' (this version has: 2d, 3d, extrude, revolve, batch, shapes; or give " +
       "a .vtu, .json, .step or .iges INPUT first)");
   Arguments chosen = a;
   if (a.command == "auto")
