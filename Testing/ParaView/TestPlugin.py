@@ -82,6 +82,25 @@ partMAT = MAT3DFilter(Input=part)  # noqa: F821
 partMAT.UpdatePipeline()
 assert servermanager.Fetch(partMAT).GetNumberOfVerts() == 5
 
+# A collection of parts (Group Datasets) through the 2D filter: each part's MAT in its place,
+# a summary row per part.
+from paraview.simple import GroupDatasets  # noqa: E402
+ring = NURBSSource(registrationName="ring")  # noqa: F821
+ring.Shape = "annulus"
+square = NURBSSource(registrationName="square")  # noqa: F821
+square.Shape = "rectangle"
+group = GroupDatasets(Input=[ring, square])
+groupMAT = MAT2DFilter(Input=group)  # noqa: F821
+groupMAT.NumberOfThreads = 2
+groupMAT.UpdatePipeline()
+collection = servermanager.Fetch(groupMAT)
+assert collection.IsA("vtkCompositeDataSet"), collection.GetClassName()
+status = collection.GetFieldData().GetArray("PartStatus")
+assert status is not None and status.GetNumberOfTuples() == 2, status
+assert [status.GetValue(i) for i in range(2)] == [0, 0]
+segments = collection.GetFieldData().GetArray("NumberOfSegments")
+assert sorted(segments.GetValue(i) for i in range(2)) == [1, 5]
+
 source.Shape = "plate-with-holes"
 source.UpdatePipeline()
 

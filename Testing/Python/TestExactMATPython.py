@@ -232,8 +232,35 @@ class PythonPackage(unittest.TestCase):
         self.assertEqual(checked, expected_count)
         return proxy
 
+    def test_a_collection_of_parts_through_the_2d_filter(self):
+        """A vtkPartitionedDataSetCollection in: the same structure out, a summary per part."""
+        from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkPartitionedDataSetCollection
+        collection = vtkPartitionedDataSetCollection()
+        for i, name in enumerate(["rectangle", "annulus", "star"]):
+            source = vtkNURBSSource()
+            source.SetShapeName(name)
+            source.Update()
+            collection.SetPartition(i, 0, source.GetOutput())
+            collection.GetMetaData(i).Set(vtkCompositeDataSet.NAME(), name)
+        mat = vtkMAT2DFilter()
+        mat.SetInputDataObject(collection)
+        mat.SetNumberOfThreads(2)
+        mat.Update()
+        out = mat.GetOutputDataObject(0)
+        self.assertEqual(out.GetClassName(), "vtkPartitionedDataSetCollection")
+        self.assertEqual(mat.GetNumberOfParts(), 3)
+        self.assertEqual(mat.GetNumberOfFailedParts(), 0)
+        names = out.GetFieldData().GetAbstractArray("PartName")
+        status = out.GetFieldData().GetArray("PartStatus")
+        segments = out.GetFieldData().GetArray("NumberOfSegments")
+        self.assertEqual([names.GetValue(i) for i in range(3)], ["rectangle", "annulus", "star"])
+        self.assertEqual([status.GetValue(i) for i in range(3)], [0, 0, 0])
+        self.assertEqual([segments.GetValue(i) for i in range(3)], [5, 1, 5])
+        self.assertEqual(mat.GetNumberOfSegments(), 11)
+        self.assertGreater(out.GetPartition(1, 0).GetNumberOfPoints(), 0)
+
     def test_mat2d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 6)
+        self.check_xml_defaults("MAT2DFilter.xml", "MAT2DFilter", vtkMAT2DFilter(), 7)
 
     def test_mat25d_filter_box_through_numpy(self):
         # The 4 x 2 rectangle extruded by 3: junctions (+-1, 0, 1) and (+-1, 0, 2), radius 1.
@@ -297,7 +324,7 @@ class PythonPackage(unittest.TestCase):
         self.assertEqual(solid.GetCellType(0), 77)  # VTK_BEZIER_QUADRILATERAL
 
     def test_mat25d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 13)
+        self.check_xml_defaults("MAT25DFilter.xml", "MAT25DFilter", vtkMAT25DFilter(), 14)
 
     def test_mat3d_filter_pillow_and_cube_through_numpy(self):
         # The pillow (a cube with bulging bicubic faces): eight seams from the corners into one
@@ -333,7 +360,7 @@ class PythonPackage(unittest.TestCase):
             errors.check()
 
     def test_mat3d_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 7)
+        self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 8)
 
     def test_step_solid_through_the_3d_filter(self):
         # The L prism written by OpenCASCADE as IGES: exact planar faces, the 3D MAT verified.
