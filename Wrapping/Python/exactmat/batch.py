@@ -12,7 +12,7 @@ as one vtkPartitionedDataSetCollection through the filter (its threads: ``-j``),
 writes each part's MAT; rank 0 then gathers every rank's rows into summary.csv and
 index.pvd. A part that cannot be read or computed is reported by name in the summary;
 the others are computed. Without MPI the exit status is that of ``exactmat batch``: 0 all
-verified, 1 some part failed, 3 some part's verification failed; under MPI it is 0 (the
+verified, 1 some part failed, 3 some part's verification failed; in pvbatch it is 0 (the
 ranks leave through ParaView's finalisation) and summary.csv says which parts failed.
 """
 import argparse
@@ -57,13 +57,13 @@ def part_names(files):
 
 
 def controller():
-    """The MPI controller pvbatch --mpi set up, or None (one process)."""
+    """The controller ParaView's pvbatch/pvpython set up (MPI under pvbatch --mpi), or None
+    (a plain Python process)."""
     try:
         from vtkmodules.vtkParallelCore import vtkMultiProcessController
     except ImportError:
         return None
-    c = vtkMultiProcessController.GetGlobalController()
-    return c if c is not None and c.GetNumberOfProcesses() > 1 else None
+    return vtkMultiProcessController.GetGlobalController()
 
 
 def read_part(path, mode):
@@ -236,7 +236,7 @@ def main(argv=None):
     share = os.path.join(args.output, f".summary-rank{rank}.json")
     with open(share, "w") as f:
         json.dump({str(i): r for i, r in rows.items()}, f)
-    if mpi:
+    if size > 1:
         mpi.Barrier()
     status = 0
     if rank == 0:
@@ -254,14 +254,15 @@ def main(argv=None):
             if gathered[i]["status"] in (STATUS[2], STATUS[3]):
                 print(f"  {gathered[i]['part']} ({gathered[i]['file']}): {gathered[i]['status']}: "
                       f"{gathered[i]['message']}")
-    if mpi:
+    if size > 1:
         mpi.Barrier()
     return status
 
 
 if __name__ == "__main__":
     code = main()
-    # Under MPI the ranks must leave through ParaView's own finalisation (sys.exit there is
-    # an "improper exit" to mpiexec): the status is then in the printed line and summary.csv.
+    # In pvbatch the process must leave through ParaView's own finalisation (sys.exit there
+    # is an "improper exit" to mpiexec): the status is then in the printed line and
+    # summary.csv. A plain Python process exits with it.
     if controller() is None:
         sys.exit(code)
