@@ -2,6 +2,7 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATThreads.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -15,6 +16,7 @@
 #include <vtkPartitionedDataSet.h>
 #include <vtkPartitionedDataSetCollection.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
@@ -269,6 +271,14 @@ int runBatch(const BatchJob& job)
       filter->AddObserver(vtkCommand::ProgressEvent, progress);
       filter->Update();
       auto* out = vtkPartitionedDataSetCollection::SafeDownCast(filter->GetOutputDataObject(0));
+      struct PartFile
+      {
+        vtkPolyData* mat;
+        std::string path;
+        size_t row;
+        bool failed;
+      };
+      std::vector<PartFile> writes;
       for (unsigned int k = 0; k < indices.size(); ++k)
       {
         Row& row = rows[indices[k]];
@@ -294,19 +304,33 @@ int runBatch(const BatchJob& job)
         row.points = mat ? mat->GetNumberOfPoints() : 0;
         if (status == 3 || !mat)
           continue;
-        vtkNew<vtkXMLPolyDataWriter> writer;
-        writer->SetInputData(mat);
-        const std::string path = (fs::path(job.outputDir) / (names[indices[k]] + ".vtp")).string();
-        writer->SetFileName(path.c_str());
-        writer->SetDataModeToBinary();
-        writer->AddObserver(vtkCommand::ErrorEvent, quiet);
-        if (writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError)
+        writes.push_back({ mat, (fs::path(job.outputDir) / (names[indices[k]] + ".vtp")).string(),
+          indices[k], false });
+      }
+      // The parts' files, written concurrently (each writer compresses its own part).
+      withThreads(job.threads, [&writes]() {
+        vtkSMPTools::For(vtkIdType(0), static_cast<vtkIdType>(writes.size()), vtkIdType(1),
+          [&writes](vtkIdType b, vtkIdType e) {
+            for (vtkIdType w = b; w < e; ++w)
+            {
+              vtkNew<vtkXMLPolyDataWriter> writer;
+              writer->SetInputData(writes[w].mat);
+              writer->SetFileName(writes[w].path.c_str());
+              writer->SetDataModeToBinary();
+              vtkNew<vtkCallbackCommand> silent; // the row says it
+              writer->AddObserver(vtkCommand::ErrorEvent, silent);
+              writes[w].failed =
+                writer->Write() != 1 || writer->GetErrorCode() != vtkErrorCode::NoError;
+            }
+          });
+      });
+      for (const PartFile& w : writes)
+        if (w.failed)
         {
-          row.status = statusWord(3);
-          row.message = "cannot write '" + path + "'";
+          rows[w.row].status = statusWord(3);
+          rows[w.row].message = "cannot write '" + w.path + "'";
           writeFailed = true;
         }
-      }
     }
     bar.show(static_cast<double>(last));
   }
