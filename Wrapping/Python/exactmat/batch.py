@@ -127,8 +127,24 @@ def make_filter(mode, args):
     return f
 
 
-def run_share(files, names, indices, args):
-    """Computes parts `indices` (this rank's share); returns their summary rows."""
+def progress_printer(rank):
+    """A progress observer factory: a line on stderr per 10 % of a group of parts."""
+    def make(mode, parts):
+        state = {"decile": -1}
+
+        def observe(algorithm, event):
+            decile = int(10 * algorithm.GetProgress())
+            if decile > state["decile"]:
+                state["decile"] = decile
+                print(f"exactmat batch: rank {rank}: {mode}: {10 * decile}% of {parts} parts",
+                      file=sys.stderr, flush=True)
+        return observe
+    return make
+
+
+def run_share(files, names, indices, args, progress=None):
+    """Computes parts `indices` (this rank's share); returns their summary rows.
+    `progress(mode, parts)` makes a ProgressEvent observer for each group's filter."""
     from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkPartitionedDataSetCollection
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
     import time
@@ -153,6 +169,8 @@ def run_share(files, names, indices, args):
         mat = make_filter(mode, args)
         mat.SetInputDataObject(collection)
         mat.GlobalWarningDisplayOff()  # failed parts are in the summary
+        if progress:
+            mat.AddObserver("ProgressEvent", progress(mode, len(parts)))
         mat.Update()
         out = mat.GetOutputDataObject(0)
         fd = out.GetFieldData()
@@ -219,6 +237,7 @@ def main(argv=None):
     p.add_argument("--verify-tolerance", type=float, default=1e-9)
     p.add_argument("--sheet-resolution", type=float, default=0.02)
     p.add_argument("--max-step", type=float, default=0.05)
+    p.add_argument("--quiet", action="store_true", help="no progress lines (rank 0 prints them)")
     args = p.parse_args(argv)
     if args.mode == "extrude" and args.length <= 0:
         p.error("--mode extrude needs --length L")
@@ -231,7 +250,8 @@ def main(argv=None):
     files = part_files(args.inputs)
     names = part_names(files)
     os.makedirs(args.output, exist_ok=True)
-    rows = run_share(files, names, range(rank, len(files), size), args)
+    rows = run_share(files, names, range(rank, len(files), size), args,
+                     progress_printer(rank) if rank == 0 and not args.quiet else None)
     # Every rank's rows reach rank 0 through the output folder (shared, as the MAT files are).
     share = os.path.join(args.output, f".summary-rank{rank}.json")
     with open(share, "w") as f:
