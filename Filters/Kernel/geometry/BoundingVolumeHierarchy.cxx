@@ -9,7 +9,7 @@ namespace exactmat
 namespace
 {
 constexpr int LeafSize = 2;
-constexpr int MaxDepth = 64; // bounds the recursion even for many coincident boxes
+constexpr int MaxDepth = BoundingVolumeHierarchy::MaxTreeDepth; // bounds the recursion even for many coincident boxes
 } // namespace
 
 void BoundingVolumeHierarchy::build(const std::vector<Box3>& boxes)

@@ -32,7 +32,47 @@ public:
   /// the caller checks them exactly), in increasing index order.
   std::vector<int> candidatesWithin(const Vec3& p, double d) const;
 
+  /// Calls visit(item) for items whose box lies within distance d of p, in no particular
+  /// order, until one returns true; returns whether one did. No allocation: the emptiness
+  /// test of every tracing step (is any piece closer than r?) stops at its first hit.
+  template <typename Visit>
+  bool anyWithin(const Vec3& p, double d, Visit&& visit) const
+  {
+    if (Nodes.empty() || !(d >= 0.0))
+      return false;
+    const double d2 = d * d;
+    int stack[2 * MaxTreeDepth + 8];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0)
+    {
+      const Node& node = Nodes[stack[--top]];
+      if (squaredDistanceToBox(node.box, p) > d2)
+        continue;
+      if (node.left < 0)
+      {
+        for (int k = node.first; k < node.first + node.count; ++k)
+          if (squaredDistanceToBox(Boxes[Order[k]], p) <= d2 && visit(Order[k]))
+            return true;
+        continue;
+      }
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    }
+    return false;
+  }
+
+  /// The tree's depth bound (median splits stop there, whatever the boxes).
+  static constexpr int MaxTreeDepth = 64;
+
 private:
+  static double squaredDistanceToBox(const Box3& box, const Vec3& p)
+  {
+    if (box.isEmpty())
+      return Unbounded;
+    return (box.min() - p).cwiseMax(p - box.max()).cwiseMax(Vec3::Zero()).squaredNorm();
+  }
+
   struct Node
   {
     Box3 box;

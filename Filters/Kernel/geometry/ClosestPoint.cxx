@@ -285,15 +285,37 @@ std::vector<CurveFootpoint> curveFootpoints(
     return result;
   }
 
-  RootFinder finder{ g, zero, {} };
-  finder.search(g, 0.0, 1.0, 0);
-  for (double t : finder.minima)
+  if (curve.degree() == 1)
   {
-    if (t <= 0.0 || t >= 1.0)
+    // A straight edge: (C − P)·C' has the sign of (C − P)·(B − A), increasing along the
+    // edge, so there is an interior minimum exactly when g goes from − to + (the root
+    // search's own criterion), at P's projection — in closed form, mapped through the
+    // weights (a rational line is a re-parameterised line). Polygons are all edges: this
+    // is most of their distance queries.
+    const double ga = g.c.front(), gb = g.c.back();
+    const Vec3 a = curve.startPoint(), ab = curve.endPoint() - a;
+    const double len2 = ab.squaredNorm();
+    if (ga < -zero && gb > zero && len2 > 0.0)
     {
-      continue; // ends are handled below
+      const double s = std::min(1.0, std::max(0.0, (query - a).dot(ab) / len2));
+      const double w0 = curve.homogeneousPoints()[0].w(), w1 = curve.homogeneousPoints()[1].w();
+      const double t = w0 == w1 ? s : s * w0 / (s * w0 + (1.0 - s) * w1);
+      if (t > 0.0 && t < 1.0)
+        result.push_back(make(t, false));
     }
-    result.push_back(make(polishCurve(curve, query, t, 0.0, 1.0), false));
+  }
+  else
+  {
+    RootFinder finder{ g, zero, {} };
+    finder.search(g, 0.0, 1.0, 0);
+    for (double t : finder.minima)
+    {
+      if (t <= 0.0 || t >= 1.0)
+      {
+        continue; // ends are handled below
+      }
+      result.push_back(make(polishCurve(curve, query, t, 0.0, 1.0), false));
+    }
   }
   // An end is a one-sided minimum when the distance does not decrease into the curve.
   if (g.c.front() >= -zero)

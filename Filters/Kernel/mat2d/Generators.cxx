@@ -119,7 +119,21 @@ GeneratorPoint Generators::evaluate(int gi, double s) const
     out.curvature = std::numeric_limits<double>::infinity();
     return out;
   }
-  const CurveDerivatives d = Boundary->edges()[g.edge].curve.derivatives(s);
+  const BezierCurve& curve = Boundary->edges()[g.edge].curve;
+  const Vec4List& h = curve.homogeneousPoints();
+  if (curve.degree() == 1 && h[0].w() == h[1].w())
+  {
+    // A straight, uniformly weighted edge (every edge of a polygon): C = A + s (B − A),
+    // no curvature. Most of a polygon's bisector solves evaluate these.
+    const Vec2 a = xy(curve.controlPoint(0)), ab = xy(curve.controlPoint(1)) - a;
+    out.p = a + s * ab;
+    out.n = perp(ab / ab.norm());
+    out.dp = ab;
+    out.curvature = 0.0;
+    out.dn = Vec2::Zero();
+    return out;
+  }
+  const CurveDerivatives d = curve.derivatives(s);
   const Vec2 d1 = xy(d.d1), d2 = xy(d.d2);
   const double speed = d1.norm();
   const Vec2 t = d1 / speed;
@@ -145,12 +159,7 @@ bool Generators::anyCloserThan(const Vec2& x, double radius) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);
   const auto& edges = Boundary->edges();
-  for (int e : Tree.candidatesWithin(q, radius))
-  {
-    if (curveComesWithin(edges[e].curve, q, radius))
-      return true;
-  }
-  return false;
+  return Tree.anyWithin(q, radius, [&](int e) { return curveComesWithin(edges[e].curve, q, radius); });
 }
 
 std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double radius) const
