@@ -4,6 +4,7 @@
 #include "vtkExactMATArrayNames.h"
 #include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
+#include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
 
 #include "TestHelpers.h"
@@ -242,4 +243,45 @@ TEST(MATCollections, ThreadedVerificationGivesTheSequentialFigures)
     EXPECT_EQ(sweptError[0], sweptError[1]) << name;
     EXPECT_GT(sheetCheck[0], 1000) << name;
   }
+}
+
+TEST(MATCollections, SolidsThroughThe3DFilterWithOneItCannotDo)
+{
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  const std::vector<std::string> names = { "box", "cylinder", "notched-cube", "pillow" };
+  for (unsigned int i = 0; i < names.size(); ++i)
+  {
+    vtkNew<vtkNURBSSource> source;
+    source->SetShapeName(names[i].c_str());
+    source->Update();
+    collection->SetPartition(i, 0, source->GetOutput());
+    collection->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), names[i].c_str());
+  }
+  vtkNew<vtkMAT3DFilter> all;
+  all->SetInputDataObject(collection);
+  all->SetNumberOfThreads(2);
+  all->Update();
+  auto* out = vtkPartitionedDataSetCollection::SafeDownCast(all->GetOutputDataObject(0));
+  ASSERT_NE(out, nullptr);
+  EXPECT_EQ(all->GetNumberOfParts(), 4);
+  EXPECT_EQ(all->GetNumberOfFailedParts(), 1);
+  // The cylinder has no vertex to start a seam from: refused, by name, the others done.
+  EXPECT_EQ(intField(out, arrays::PartStatus, 1), 3);
+  EXPECT_NE(stringField(out, arrays::PartMessage, 1).find("3D MAT"), std::string::npos);
+  int junctions = 0;
+  for (unsigned int i : { 0u, 2u, 3u })
+  {
+    EXPECT_EQ(intField(out, arrays::PartStatus, i), 0) << names[i];
+    vtkNew<vtkNURBSSource> source;
+    source->SetShapeName(names[i].c_str());
+    vtkNew<vtkMAT3DFilter> one;
+    one->SetInputConnection(source->GetOutputPort());
+    one->SetNumberOfThreads(1);
+    one->Update();
+    expectIdentical(one->GetOutput(), vtkPolyData::SafeDownCast(out->GetPartition(i, 0)), names[i]);
+    EXPECT_EQ(one->GetMaximumVerifiedError(),
+      vtkDataArray::SafeDownCast(out->GetFieldData()->GetArray(arrays::MaximumVerifiedError))->GetTuple1(i));
+    junctions += one->GetNumberOfJunctions();
+  }
+  EXPECT_EQ(all->GetNumberOfJunctions(), junctions);
 }
