@@ -1,5 +1,6 @@
 // The planar B-rep: loops, orientation, classification and bad input.
 #include "brep/Boundary2D.h"
+#include "geometry/CurveCrossings.h"
 #include "common/InputError.h"
 #include "shapes/Catalogue.h"
 #include "shapes/Primitives.h"
@@ -191,4 +192,37 @@ TEST(Boundary2D, ConnectsByPointIdsWhenGiven)
     p[i].endId = static_cast<long long>((i + 1) % p.size());
   }
   EXPECT_EQ(Boundary2D::build(p).loops().size(), 1u);
+}
+
+// The crossing check halves curves only where parts come close; a curve that loops onto
+// itself inside one half of its piece must still be found, and the verdict must be the
+// one the full flattening gives.
+TEST(Boundary2D, CrossingsFoundWhereverTheyAre)
+{
+  // A cubic with a loop, extrapolated to twice its parameter range: the loop lies in the
+  // first half of the piece. Closed by a straight edge.
+  const BezierCurve loopCubic(Vec3List{ Vec3(0, 0, 0), Vec3(3, 2, 0), Vec3(-1, 2, 0), Vec3(2, 0, 0) }, {});
+  BezierCurve extended, beyond;
+  loopCubic.split(2.0, extended, beyond);
+  const BezierCurve closing(Vec3List{ extended.endPoint(), extended.startPoint() }, {});
+  const CurveCrossing x = findCrossing({ { &extended, &closing } }, 1e-6);
+  EXPECT_TRUE(x.found);
+  EXPECT_EQ(x.curveA, 0);
+  EXPECT_EQ(x.curveB, 0);
+  std::vector<CurvePiece> pieces(2);
+  pieces[0].curve = extended;
+  pieces[1].curve = closing;
+  const std::string e = errorOf(pieces);
+  EXPECT_NE(e.find("edge 0 crosses itself"), std::string::npos) << e;
+  // Valid shapes, curved and straight, close to themselves (the narrow passage) or not.
+  for (const char* name : { "ellipse", "spiral", "narrow-passage", "plate-with-holes", "blob", "annulus" })
+  {
+    const Shape s = makeShape(name);
+    EXPECT_NO_THROW(Boundary2D::build(curvePieces(s.curves))) << name;
+  }
+  // Two circles 1e-3 apart do not cross; two that overlap by 1e-4 do.
+  std::vector<NurbsCurve> apart{ makeArc(Vec3::Zero(), 1, 0, 2 * M_PI), makeArc(Vec3(2.001, 0, 0), 1, 0, 2 * M_PI) };
+  EXPECT_NO_THROW(Boundary2D::build(piecesOf(apart)));
+  std::vector<NurbsCurve> overlap{ makeArc(Vec3::Zero(), 1, 0, 2 * M_PI), makeArc(Vec3(1.9999, 0, 0), 1, 0, 2 * M_PI) };
+  EXPECT_NE(errorOf(piecesOf(overlap)).find("loops 0 and 1 intersect"), std::string::npos);
 }

@@ -3,6 +3,7 @@
 #include "common/Format.h"
 #include "common/InputError.h"
 #include "common/UnionFind.h"
+#include "geometry/CurveCrossings.h"
 #include "geometry/Flatten.h"
 
 #include <algorithm>
@@ -75,29 +76,6 @@ double areaContribution(const BezierCurve& c)
     }
   }
   return sum;
-}
-
-double orient2d(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-}
-
-bool onSegment(const Vec3& a, const Vec3& b, const Vec3& p)
-{
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
-    std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
-}
-
-bool segmentsIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
-{
-  const double d1 = orient2d(c, d, a), d2 = orient2d(c, d, b);
-  const double d3 = orient2d(a, b, c), d4 = orient2d(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-  {
-    return true;
-  }
-  return (d1 == 0 && onSegment(c, d, a)) || (d2 == 0 && onSegment(c, d, b)) ||
-    (d3 == 0 && onSegment(a, b, c)) || (d4 == 0 && onSegment(a, b, d));
 }
 
 // Crossing-number test of p against a closed polyline.
@@ -293,7 +271,8 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
 
 void Boundary2D::orientLoops()
 {
-  const double flatTol = 1e-6 * Diagonal;
+  // Nesting needs polygons only when there is more than one loop (most parts have one).
+  const bool nested = Loops.size() > 1;
   std::vector<Vec3List> polys(Loops.size());
   for (size_t l = 0; l < Loops.size(); ++l)
   {
@@ -301,7 +280,9 @@ void Boundary2D::orientLoops()
     for (int e : Loops[l].edges)
     {
       area += areaContribution(Edges[e].curve);
-      const Vec3List pts = flatten(Edges[e].curve, flatTol);
+      if (!nested)
+        continue;
+      const Vec3List pts = flatten(Edges[e].curve, 1e-6 * Diagonal);
       polys[l].insert(polys[l].end(), pts.begin(), pts.end() - 1);
     }
     Loops[l].signedArea = area;
@@ -341,62 +322,23 @@ void Boundary2D::orientLoops()
 
 void Boundary2D::checkIntersections() const
 {
-  struct Segment
-  {
-    Vec3 a, b;
-    int edge, loop, index, loopSize;
-    double minX, maxX;
-  };
-  std::vector<Segment> segs;
-  const double flatTol = 1e-6 * Diagonal;
+  std::vector<std::vector<const BezierCurve*>> chains(Loops.size());
   for (size_t l = 0; l < Loops.size(); ++l)
-  {
-    const size_t first = segs.size();
     for (int e : Loops[l].edges)
-    {
-      const Vec3List pts = flatten(Edges[e].curve, flatTol);
-      for (size_t k = 0; k + 1 < pts.size(); ++k)
-      {
-        Segment s{ pts[k], pts[k + 1], e, static_cast<int>(l), static_cast<int>(segs.size() - first),
-          0, std::min(pts[k].x(), pts[k + 1].x()), std::max(pts[k].x(), pts[k + 1].x()) };
-        segs.push_back(s);
-      }
-    }
-    for (size_t k = first; k < segs.size(); ++k)
-    {
-      segs[k].loopSize = static_cast<int>(segs.size() - first);
-    }
-  }
-  std::sort(segs.begin(), segs.end(),
-    [](const Segment& a, const Segment& b) { return a.minX < b.minX; });
-  for (size_t i = 0; i < segs.size(); ++i)
+      chains[l].push_back(&Edges[e].curve);
+  const CurveCrossing x = findCrossing(chains, 1e-6 * Diagonal);
+  if (!x.found)
+    return;
+  const Edge2D& a = Edges[Loops[x.chainA].edges[x.curveA]];
+  const Edge2D& b = Edges[Loops[x.chainB].edges[x.curveB]];
+  const Vec3 at = userPoint(x.near);
+  if (x.chainA == x.chainB)
   {
-    const Segment& s = segs[i];
-    for (size_t j = i + 1; j < segs.size() && segs[j].minX <= s.maxX; ++j)
-    {
-      const Segment& t = segs[j];
-      if (s.loop == t.loop)
-      {
-        const int d = std::abs(s.index - t.index);
-        if (d <= 1 || d == s.loopSize - 1)
-        {
-          continue; // neighbours along the loop share an end point
-        }
-      }
-      if (segmentsIntersect(s.a, s.b, t.a, t.b))
-      {
-        const Vec3 at = userPoint(Vec3(0.5 * (s.a + s.b)));
-        if (s.loop == t.loop)
-        {
-          fail("self-intersecting loop ", s.loop, ": ", Edges[s.edge].name(),
-            (s.edge == t.edge ? " crosses itself" : " crosses " + Edges[t.edge].name()),
-            " near ", format(at));
-        }
-        fail("loops ", s.loop, " and ", t.loop, " intersect: ", Edges[s.edge].name(),
-          " crosses ", Edges[t.edge].name(), " near ", format(at));
-      }
-    }
+    fail("self-intersecting loop ", x.chainA, ": ", a.name(),
+      (&a == &b ? " crosses itself" : " crosses " + b.name()), " near ", format(at));
   }
+  fail("loops ", x.chainA, " and ", x.chainB, " intersect: ", a.name(), " crosses ", b.name(),
+    " near ", format(at));
 }
 
 void Boundary2D::classifyVertices(const Options& options)

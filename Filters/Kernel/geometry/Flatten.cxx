@@ -3,10 +3,6 @@
 namespace exactmat
 {
 
-namespace
-{
-constexpr int MaxDepth = 12;
-
 double chordDeviation(const BezierCurve& c)
 {
   const Vec3 a = c.startPoint(), b = c.endPoint();
@@ -22,9 +18,11 @@ double chordDeviation(const BezierCurve& c)
   return dev;
 }
 
+namespace
+{
 void recurse(const BezierCurve& c, double tol, int depth, Vec3List& out)
 {
-  if (depth >= MaxDepth || chordDeviation(c) <= tol)
+  if (depth >= MaxFlattenDepth || chordDeviation(c) <= tol)
   {
     out.push_back(c.endPoint());
     return;
