@@ -226,3 +226,22 @@ TEST(Boundary2D, CrossingsFoundWhereverTheyAre)
   std::vector<NurbsCurve> overlap{ makeArc(Vec3::Zero(), 1, 0, 2 * M_PI), makeArc(Vec3(1.9999, 0, 0), 1, 0, 2 * M_PI) };
   EXPECT_NE(errorOf(piecesOf(overlap)).find("loops 0 and 1 intersect"), std::string::npos);
 }
+
+// Nesting is decided on coarse polygons where the probe is far from a loop and on fine
+// ones where it is close: a hole 1e-4 inside the outer loop, and an island in the hole.
+TEST(Boundary2D, NestingOfCloseLoops)
+{
+  std::vector<NurbsCurve> loops{ makeArc(Vec3::Zero(), 1, 0, 2 * M_PI),
+    makeArc(Vec3::Zero(), 0.9999, 0, 2 * M_PI), makeArc(Vec3(0.2, 0, 0), 0.5, 0, 2 * M_PI) };
+  const Boundary2D b = Boundary2D::build(piecesOf(loops));
+  ASSERT_EQ(b.loops().size(), 3u);
+  EXPECT_EQ(b.holeCount(), 1);
+  int outer = 0;
+  for (const Loop2D& l : b.loops())
+    outer += l.outer ? 1 : 0;
+  EXPECT_EQ(outer, 2);
+  // The island's parent is the hole, the hole's the outer loop.
+  for (const Loop2D& l : b.loops())
+    if (!l.outer)
+      EXPECT_NEAR(std::abs(l.signedArea), M_PI * 0.9999 * 0.9999, 1e-9);
+}

@@ -58,13 +58,24 @@ const double GaussW[8] = { 0.1894506104550685, 0.1826034150449236, 0.16915651939
   0.1495959888165767, 0.1246289712555339, 0.0951585116824928, 0.0622535239386479,
   0.0271524594117541 };
 
-// ½∮(x dy − y dx) over one curve, on 4 sub-intervals of 16 Gauss points each.
+// ½∮(x dy − y dx) over one curve: exact in closed form for a straight edge; for a
+// polynomial curve the integrand is a polynomial of degree 2p − 1, which 16 Gauss points
+// integrate exactly up to p = 16; a rational one on 4 sub-intervals of 16 points each.
 double areaContribution(const BezierCurve& c)
 {
-  double sum = 0.0;
-  for (int part = 0; part < 4; ++part)
+  const Vec4List& h4 = c.homogeneousPoints();
+  const bool polynomial = std::all_of(
+    h4.begin(), h4.end(), [&h4](const Vec4& h) { return h.w() == h4.front().w(); });
+  if (polynomial && c.degree() == 1)
   {
-    const double a = 0.25 * part, h = 0.25;
+    const Vec3 a = c.startPoint(), b = c.endPoint();
+    return 0.5 * (a.x() * b.y() - a.y() * b.x());
+  }
+  const int parts = polynomial && c.degree() <= 16 ? 1 : 4;
+  double sum = 0.0;
+  for (int part = 0; part < parts; ++part)
+  {
+    const double h = 1.0 / parts, a = h * part;
     for (int k = 0; k < 8; ++k)
     {
       for (int sgn = -1; sgn <= 1; sgn += 2)
@@ -272,8 +283,13 @@ void Boundary2D::findLoops(const std::vector<CurvePiece>& pieces, const Options&
 void Boundary2D::orientLoops()
 {
   // Nesting needs polygons only when there is more than one loop (most parts have one).
+  // A coarse polygon answers "is the probe inside?" as the curves would wherever the probe
+  // lies outside every part's control-point box: the region between a part and its chord
+  // lies in that box, so a ray from outside crosses both equally often. Otherwise the
+  // loop's fine polygon (1e-6 of the size) answers.
   const bool nested = Loops.size() > 1;
-  std::vector<Vec3List> polys(Loops.size());
+  std::vector<Vec3List> polys(Loops.size()), finePolys(Loops.size());
+  std::vector<std::vector<Box3>> partBoxes(Loops.size());
   for (size_t l = 0; l < Loops.size(); ++l)
   {
     double area = 0.0;
@@ -282,11 +298,29 @@ void Boundary2D::orientLoops()
       area += areaContribution(Edges[e].curve);
       if (!nested)
         continue;
-      const Vec3List pts = flatten(Edges[e].curve, 1e-6 * Diagonal);
-      polys[l].insert(polys[l].end(), pts.begin(), pts.end() - 1);
+      for (const BezierCurve& part : flattenParts(Edges[e].curve, 1e-3 * Diagonal))
+      {
+        polys[l].push_back(part.startPoint());
+        partBoxes[l].push_back(part.boundingBox());
+      }
     }
     Loops[l].signedArea = area;
   }
+  auto inside = [&](size_t m, const Vec3& probe) {
+    const bool close = std::any_of(partBoxes[m].begin(), partBoxes[m].end(), [&](const Box3& b) {
+      return b.min().x() <= probe.x() && probe.x() <= b.max().x() && b.min().y() <= probe.y() &&
+        probe.y() <= b.max().y();
+    });
+    if (!close)
+      return insidePolyline(polys[m], probe);
+    if (finePolys[m].empty())
+      for (int e : Loops[m].edges)
+      {
+        const Vec3List pts = flatten(Edges[e].curve, 1e-6 * Diagonal);
+        finePolys[m].insert(finePolys[m].end(), pts.begin(), pts.end() - 1);
+      }
+    return insidePolyline(finePolys[m], probe);
+  };
   for (size_t l = 0; l < Loops.size(); ++l)
   {
     const Vec3 probe = Edges[Loops[l].edges.front()].curve.startPoint();
@@ -294,7 +328,7 @@ void Boundary2D::orientLoops()
     double parentArea = std::numeric_limits<double>::infinity();
     for (size_t m = 0; m < Loops.size(); ++m)
     {
-      if (m != l && insidePolyline(polys[m], probe))
+      if (m != l && inside(m, probe))
       {
         ++depth;
         if (std::abs(Loops[m].signedArea) < parentArea)

@@ -20,28 +20,44 @@ double chordDeviation(const BezierCurve& c)
 
 namespace
 {
-void recurse(const BezierCurve& c, double tol, int depth, Vec3List& out)
+template <typename Emit>
+void recurse(const BezierCurve& c, double tol, int depth, Emit& emit)
 {
   if (depth >= MaxFlattenDepth || chordDeviation(c) <= tol)
   {
-    out.push_back(c.endPoint());
+    emit(c);
     return;
   }
   BezierCurve l, r;
   c.split(0.5, l, r);
-  recurse(l, tol, depth + 1, out);
-  recurse(r, tol, depth + 1, out);
+  recurse(l, tol, depth + 1, emit);
+  recurse(r, tol, depth + 1, emit);
+}
+
+template <typename Emit>
+void halves(const BezierCurve& curve, double tolerance, Emit& emit)
+{
+  // Always split once: a closed single curve would otherwise be one degenerate chord.
+  BezierCurve l, r;
+  curve.split(0.5, l, r);
+  recurse(l, tolerance, 1, emit);
+  recurse(r, tolerance, 1, emit);
 }
 } // namespace
 
 Vec3List flatten(const BezierCurve& curve, double tolerance)
 {
   Vec3List out{ curve.startPoint() };
-  // Always split once: a closed single curve would otherwise be one degenerate chord.
-  BezierCurve l, r;
-  curve.split(0.5, l, r);
-  recurse(l, tolerance, 1, out);
-  recurse(r, tolerance, 1, out);
+  auto emit = [&out](const BezierCurve& part) { out.push_back(part.endPoint()); };
+  halves(curve, tolerance, emit);
+  return out;
+}
+
+std::vector<BezierCurve> flattenParts(const BezierCurve& curve, double tolerance)
+{
+  std::vector<BezierCurve> out;
+  auto emit = [&out](const BezierCurve& part) { out.push_back(part); };
+  halves(curve, tolerance, emit);
   return out;
 }
 

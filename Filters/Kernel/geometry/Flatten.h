@@ -13,6 +13,9 @@ namespace exactmat
 /// parts). Includes both ends.
 Vec3List flatten(const BezierCurve& curve, double tolerance);
 
+/// The parts flatten() ends with, in order (their ends are its points).
+std::vector<BezierCurve> flattenParts(const BezierCurve& curve, double tolerance);
+
 /// How far the control polygon of `curve` strays from the line of its chord: flatten()
 /// stops halving a part when this is ≤ its tolerance, or at MaxFlattenDepth halvings.
 double chordDeviation(const BezierCurve& curve);
