@@ -145,6 +145,15 @@ GeneratorPoint Generators::evaluate(int gi, double s) const
   return out;
 }
 
+bool Generators::straight(int gi) const
+{
+  const Generator& g = List[gi];
+  if (g.kind != GeneratorKind::Edge)
+    return false;
+  const BezierCurve& c = Boundary->edges()[g.edge].curve;
+  return c.degree() == 1 && c.homogeneousPoints()[0].w() == c.homogeneousPoints()[1].w();
+}
+
 double Generators::distance(const Vec2& x) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);

@@ -72,6 +72,8 @@ public:
 
   /// Distance from x to the whole boundary (exact, global).
   double distance(const Vec2& x) const;
+  /// Generator g is a straight edge (degree 1, uniform weights).
+  bool straight(int g) const;
 
   /// True when some boundary point lies strictly inside the disk of `radius` about x:
   /// the emptiness test of a maximal disk, exact and cheaper than distance().

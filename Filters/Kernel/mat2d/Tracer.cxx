@@ -580,6 +580,11 @@ void Tracer::trace(const Pending& p)
 
   const double tolerance = O.tolerance * L;
   double h = O.fixedStep ? O.step * L : std::max(1e-6 * L, std::min(0.02 * L, 10.0 * tolerance));
+  // Between two straight edges the MAT is a straight line and its radius linear: no step
+  // has a chord error, so start at the longest step instead of growing to it (the disks at
+  // both ends and halfway are checked as on every step).
+  if (!O.fixedStep && G.straight(p.a.g) && G.straight(p.b.g))
+    h = 0.05 * L;
   const int checkEvery = O.fixedStep ? std::max(1, static_cast<int>(std::lround(O.branchCheckStep / O.step))) : 1;
   int sinceCheck = 0;
   bool checkEveryStep = !O.fixedStep;
