@@ -295,3 +295,42 @@ TEST(MAT2DVerification, AnyParallelRunnerGivesTheSequentialFigures)
     EXPECT_GT(a.points, 20) << name;
   }
 }
+
+// Issue 14: in the thesis' fixed-step mode the segments of a conic or a blob end exactly at
+// the centres of curvature (their last step lands on the end node): the ellipse 2 x 1 at
+// (±1.5, 0) with radius 0.5, the blob's five ends at radius 1/κ of their footpoint.
+TEST(MAT2D, FixedStepSegmentsLandOnCurvatureCentres)
+{
+  MAT2DOptions fixed;
+  fixed.fixedStep = true;
+  for (const char* name : { "ellipse", "blob", "rounded-rectangle" })
+  {
+    const TracedMAT r = runShape(name, fixed);
+    int ends = 0;
+    for (const MedialNode& n : r.graph.nodes)
+    {
+      if (n.type != MedialPointType::CurvatureCentreEnd)
+        continue;
+      ++ends;
+      const BoundaryLocation& f = n.footpoints.front();
+      const GeneratorPoint gp = r.generators->evaluate(f.g, f.s);
+      EXPECT_NEAR(n.sample.radius, 1.0 / gp.curvature, 1e-12) << name;
+      EXPECT_NEAR((n.sample.x - (gp.p + gp.n / gp.curvature)).norm(), 0.0, 1e-12) << name;
+    }
+    EXPECT_GT(ends, 0) << name;
+    for (const MedialSegment& s : r.graph.segments)
+    {
+      EXPECT_EQ((s.samples.back().x - r.graph.nodes[s.endNode].sample.x).norm(), 0.0) << name;
+      EXPECT_EQ((s.samples.front().x - r.graph.nodes[s.startNode].sample.x).norm(), 0.0) << name;
+    }
+    expectVerified(r, name);
+  }
+  const TracedMAT e = runShape("ellipse", fixed);
+  for (const MedialNode& n : e.graph.nodes)
+    if (n.type == MedialPointType::CurvatureCentreEnd)
+    {
+      EXPECT_NEAR(std::abs(n.sample.x.x()), 1.5, 1e-12);
+      EXPECT_NEAR(n.sample.x.y(), 0.0, 1e-12);
+      EXPECT_NEAR(n.sample.radius, 0.5, 1e-12);
+    }
+}
