@@ -21,7 +21,9 @@ namespace
 {
 struct Result
 {
-  double ms = 0.0;
+  double ms = 0.0;      ///< tracing (computeMAT2D)
+  double setupMs = 0.0; ///< the boundary (loops, orientation, crossing check) and generators
+  double verifyMs = 0.0;
   int points = 0, segments = 0, branches = 0;
   double error = 0.0;
   bool topology = false; ///< boundary covered once by the footpoints and cycles = holes
@@ -29,10 +31,18 @@ struct Result
 
 Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& options, int repeats)
 {
-  const Boundary2D b = Boundary2D::build(curvePieces(curves));
-  const Generators g(b);
+  const std::vector<CurvePiece> pieces = curvePieces(curves);
   Result r;
-  r.ms = 1e300;
+  r.ms = r.setupMs = r.verifyMs = 1e300;
+  for (int k = 0; k < repeats; ++k)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Boundary2D bb = Boundary2D::build(pieces);
+    const Generators gg(bb);
+    r.setupMs = std::min(r.setupMs, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  const Boundary2D b = Boundary2D::build(pieces);
+  const Generators g(b);
   MedialGraph graph;
   for (int k = 0; k < repeats; ++k)
   {
@@ -43,7 +53,13 @@ Result measure(const std::vector<NurbsCurve>& curves, const MAT2DOptions& option
   r.points = graph.pointCount();
   r.segments = static_cast<int>(graph.segments.size());
   r.branches = graph.count(MedialPointType::Branch);
-  const MAT2DVerification v = verifyMAT2D(g, graph);
+  MAT2DVerification v;
+  for (int k = 0; k < repeats; ++k)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    v = verifyMAT2D(g, graph);
+    r.verifyMs = std::min(r.verifyMs, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
   r.error = v.maxDistanceError;
   r.topology = v.uncovered <= 1e-6 && v.coveredTwice <= 1e-6 && v.cycles == v.holes &&
     v.footpointShortfalls == 0;
@@ -69,8 +85,8 @@ int main(int argc, char* argv[])
   modes[2].options.fixedStep = true;
 
   std::printf("## 2D MAT per catalogue shape (best of %d runs, one core)\n\n", repeats);
-  std::printf("| shape | mode | time (ms) | points | segments | branch points | verified error | coverage, cycles |\n");
-  std::printf("|---|---|---:|---:|---:|---:|---:|---|\n");
+  std::printf("| shape | mode | set-up (ms) | tracing (ms) | verification (ms) | points | segments | branch points | verified error | coverage, cycles |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n");
   for (const std::string& name : catalogueNames())
   {
     const Shape s = makeShape(name);
@@ -79,7 +95,8 @@ int main(int argc, char* argv[])
     for (const Mode& m : modes)
     {
       const Result r = measure(s.curves, m.options, repeats);
-      std::printf("| %s | %s | %.2f | %d | %d | %d | %.1e | %s |\n", name.c_str(), m.name, r.ms, r.points,
+      std::printf("| %s | %s | %.3f | %.3f | %.3f | %d | %d | %d | %.1e | %s |\n", name.c_str(), m.name,
+        r.setupMs, r.ms, r.verifyMs, r.points,
         r.segments, r.branches, r.error, r.topology ? "ok" : "WRONG");
     }
   }
