@@ -398,6 +398,22 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
   return negativeSomewhere(h, 0);
 }
 
+bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius, double touch)
+{
+  if (curve.degree() == 1 || !(touch > 0.0 && touch < 1.0))
+    return curveComesWithin(curve, query, radius);
+  if (!(radius > 0.0) || distanceToBox(curve.boundingBox(), query) >= radius)
+    return false;
+  const CurvePolys cp = curvePolys(curve, query);
+  BernsteinPoly h = cp.d[0] * cp.d[0] + cp.d[1] * cp.d[1] + cp.d[2] * cp.d[2];
+  h = h - (radius * radius) * (cp.w * cp.w);
+  if (*std::min_element(h.c.begin(), h.c.end()) >= 0.0)
+    return false;
+  BernsteinPoly left, right;
+  h.split(touch, left, right);
+  return negativeSomewhere(left, 1) || negativeSomewhere(right, 1);
+}
+
 CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query)
 {
   const std::vector<CurveFootpoint> fps = curveFootpoints(curve, query);

@@ -59,6 +59,11 @@ CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query);
 /// than curveFootpoints when only emptiness of a disk matters. Subdivision stops at 2^-40,
 /// where the curve is within rounding of the circle: that counts as not closer.
 bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius);
+/// The same test, told where the disk touches the curve (parameter `touch`, a footpoint of
+/// the query): the squared distance is split there, so the proof that it stays above
+/// radius² near a tangency is not a 40-level subdivision around a double root. The answer
+/// is the same; only the work differs.
+bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius, double touch);
 
 /// Every local minimum of |S(u,v) − P| on [0,1]² with distance ≤ maxDistance, interior
 /// and boundary, sorted by distance.

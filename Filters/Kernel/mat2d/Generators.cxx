@@ -171,6 +171,22 @@ bool Generators::anyCloserThan(const Vec2& x, double radius) const
   return Tree.anyWithin(q, radius, [&](int e) { return curveComesWithin(edges[e].curve, q, radius); });
 }
 
+bool Generators::anyCloserThan(
+  const Vec2& x, double radius, int touchA, double sa, int touchB, double sb) const
+{
+  const Vec3 q(x.x(), x.y(), 0.0);
+  const auto& edges = Boundary->edges();
+  const int ea = List[touchA].kind == GeneratorKind::Edge ? List[touchA].edge : -1;
+  const int eb = List[touchB].kind == GeneratorKind::Edge ? List[touchB].edge : -1;
+  return Tree.anyWithin(q, radius, [&](int e) {
+    if (e == ea)
+      return curveComesWithin(edges[e].curve, q, radius, sa);
+    if (e == eb)
+      return curveComesWithin(edges[e].curve, q, radius, sb);
+    return curveComesWithin(edges[e].curve, q, radius);
+  });
+}
+
 std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double radius) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);

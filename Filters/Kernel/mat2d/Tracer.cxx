@@ -216,6 +216,11 @@ private:
   void mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints);
   void trace(const Pending& p);
   bool emptyDisk(const Vec2& x, double r) const;
+  /// The same for a point of the bisector of generators ga, gb touching them at sa, sb.
+  bool emptyDisk(const Vec2& x, double r, int ga, double sa, int gb, double sb) const
+  {
+    return !G.anyCloserThan(x, r - diskMargin(r), ga, sa, gb, sb);
+  }
   /// How far inside a disk of radius r the boundary may reach and the disk still count
   /// as empty: rounding, and no less than the input's own.
   double diskMargin(double r) const;
@@ -961,7 +966,7 @@ void Tracer::trace(const Pending& p)
           // A boundary feature whose MAT interrupts this pair's only between the two ends
           // of the step would go unseen by checks at the ends: check halfway too, and
           // take a shorter step when that disk is not empty.
-          else if (!emptyDisk(xm, ym.r))
+          else if (!emptyDisk(xm, ym.r, a.g, ym.sa, b.g, ym.sb))
           {
             ok = false;
             resize = 0.5;
@@ -1000,7 +1005,7 @@ void Tracer::trace(const Pending& p)
       const bool check = !sharedConvexVertex &&
         (checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd);
       const bool valid = curvatureOk(a.g, y1.sa, y1.r) && curvatureOk(b.g, y1.sb, y1.r) &&
-        (!check || emptyDisk(x1, y1.r));
+        (!check || emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb));
       if (!valid)
       {
         if (!checkEveryStep)
@@ -1025,7 +1030,8 @@ void Tracer::trace(const Pending& p)
               continue;
             }
             const Vec2 xm = B.point(ym);
-            if (curvatureOk(a.g, ym.sa, ym.r) && curvatureOk(b.g, ym.sb, ym.r) && emptyDisk(xm, ym.r))
+            if (curvatureOk(a.g, ym.sa, ym.r) && curvatureOk(b.g, ym.sb, ym.r) &&
+              emptyDisk(xm, ym.r, a.g, ym.sa, b.g, ym.sb))
             {
               lo = mid;
               yb = ym;
