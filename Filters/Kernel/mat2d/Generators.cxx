@@ -119,9 +119,6 @@ GeneratorPoint Generators::evaluate(int gi, double s) const
     out.curvature = std::numeric_limits<double>::infinity();
     return out;
   }
-  // (A straight edge's closed form, C = A + s (B − A), was tried here: 1-ulp differences in
-  // the profile's points made a 1e-6-thin extruded plate's sheet verification miss a
-  // touchpoint. The generic evaluation stays.)
   const BezierCurve& curve = Boundary->edges()[g.edge].curve;
   const CurveDerivatives d = curve.derivatives(s);
   const Vec2 d1 = xy(d.d1), d2 = xy(d.d2);
@@ -130,7 +127,11 @@ GeneratorPoint Generators::evaluate(int gi, double s) const
   out.p = xy(d.point);
   out.n = perp(t);
   out.dp = d1;
-  out.curvature = (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
+  // A straight edge has no curvature: exactly 0, not the rounding of C'' (which would make
+  // it a curve with a centre of curvature 1e16 away to look for). Its point and tangent
+  // stay the generic evaluation's: a closed form A + s (B − A) differs by an ulp, which a
+  // 1e-6-thin extruded plate's sheet verification has been seen to notice.
+  out.curvature = straight(gi) ? 0.0 : (d1.x() * d2.y() - d1.y() * d2.x()) / (speed * speed * speed);
   out.dn = -out.curvature * d1; // N' = −κ·C' for the left normal
   return out;
 }

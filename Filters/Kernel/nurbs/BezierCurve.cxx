@@ -24,6 +24,23 @@ Vec3 BezierCurve::evaluate(double t) const
 CurveDerivatives BezierCurve::derivatives(double t) const
 {
   const int p = degree();
+  if (p == 1)
+  {
+    // A straight edge (every edge of a polygon, evaluated at every tracing step): the
+    // general path's own arithmetic, operation for operation — B = (1 − t, t),
+    // B' = (−1, 1), B'' = 0 — without building the Bernstein triangle. Bit-identical.
+    const double s = 1.0 - t;
+    Vec4 a[3] = { Vec4::Zero(), Vec4::Zero(), Vec4::Zero() };
+    a[0] += (s * 1.0) * Points[0];
+    a[0] += (t * 1.0) * Points[1];
+    a[1] += (1 * (0.0 - 1.0)) * Points[0];
+    a[1] += (1 * (1.0 - 0.0)) * Points[1];
+    a[2] += 0.0 * Points[0];
+    a[2] += 0.0 * Points[1];
+    CurveDerivatives out;
+    rationalCurveDerivatives(a[0], a[1], a[2], out);
+    return out;
+  }
   double b[3 * (MaxDegree + 1)];
   bernsteinWithDerivatives(p, t, b);
   Vec4 a[3] = { Vec4::Zero(), Vec4::Zero(), Vec4::Zero() };
