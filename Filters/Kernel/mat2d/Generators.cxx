@@ -45,6 +45,8 @@ Generators::Generators(const Boundary2D& boundary)
       g.edge = e;
       g.loop = static_cast<int>(l);
       g.entity = edges[e].entity;
+      const BezierCurve& c = edges[e].curve;
+      g.straight = c.degree() == 1 && c.homogeneousPoints()[0].w() == c.homogeneousPoints()[1].w();
       GeneratorOfEdge[e] = static_cast<int>(List.size());
       List.push_back(g);
       const int v = edges[e].endVertex;
@@ -138,11 +140,7 @@ GeneratorPoint Generators::evaluate(int gi, double s) const
 
 bool Generators::straight(int gi) const
 {
-  const Generator& g = List[gi];
-  if (g.kind != GeneratorKind::Edge)
-    return false;
-  const BezierCurve& c = Boundary->edges()[g.edge].curve;
-  return c.degree() == 1 && c.homogeneousPoints()[0].w() == c.homogeneousPoints()[1].w();
+  return List[gi].straight;
 }
 
 double Generators::distance(const Vec2& x) const

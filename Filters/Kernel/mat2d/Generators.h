@@ -44,6 +44,7 @@ struct Generator
   VertexKind endJunction = VertexKind::Smooth, startJunction = VertexKind::Smooth;
   double angle0 = 0.0, sweep = 0.0; ///< ReflexCorner: normal angle at s = 0 and its change
   int entity = -1; ///< the user entity (edges), or −1
+  bool straight = false; ///< Edge of degree 1 with uniform weights (a polygon's edge)
 };
 
 /// A place on the boundary: generator g, parameter s, and the point.
