@@ -452,4 +452,29 @@ std::string Generator3D::name() const
   return s.str();
 }
 
+std::vector<Generator3D> medialGenerators(const Boundary3D& boundary)
+{
+  std::vector<Generator3D> out;
+  for (int f = 0; f < static_cast<int>(boundary.faces().size()); ++f)
+    out.emplace_back(boundary, f);
+  for (int e = 0; e < static_cast<int>(boundary.edges().size()); ++e)
+    if (boundary.edges()[e].kind == VertexKind::Reflex)
+      out.push_back(Generator3D::reflexEdge(boundary, e));
+  for (int v = 0; v < static_cast<int>(boundary.vertices().size()); ++v)
+  {
+    bool convex = false, reflex = false;
+    for (int e : boundary.vertices()[v].edges)
+    {
+      convex = convex || boundary.edges()[e].kind == VertexKind::Convex;
+      reflex = reflex || boundary.edges()[e].kind == VertexKind::Reflex;
+    }
+    if (convex || !reflex)
+      continue;
+    Generator3D corner = Generator3D::reflexCorner(boundary, v);
+    if (corner.cornerHasCone())
+      out.push_back(std::move(corner));
+  }
+  return out;
+}
+
 } // namespace exactmat

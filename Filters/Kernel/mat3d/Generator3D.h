@@ -137,4 +137,10 @@ private:
   Vec3List CornerTangents;
 };
 
+/// Every entity a medial ball of the solid can touch, in the numbering the 3D MAT and its
+/// sheets share: the faces (generator f = face f), then the reflex edges (in edge order),
+/// then the reflex corners (vertices with reflex edges and no convex one) whose normal
+/// cone has an interior.
+std::vector<Generator3D> medialGenerators(const Boundary3D& boundary);
+
 } // namespace exactmat

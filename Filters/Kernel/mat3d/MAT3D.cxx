@@ -35,28 +35,14 @@ public:
     , Size(boundary.diagonal())
     , System(Generators)
   {
-    // Generators: the faces (generator index = face index), then the reflex edges, then
-    // the reflex corners whose normal cone has an interior.
-    for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
-      Generators.emplace_back(B, f);
+    Generators = medialGenerators(B);
     EdgeGenerator.assign(B.edges().size(), -1);
-    for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
-      if (B.edges()[e].kind == VertexKind::Reflex)
-      {
-        EdgeGenerator[e] = static_cast<int>(Generators.size());
-        Generators.push_back(Generator3D::reflexEdge(B, e));
-      }
     CornerGenerator.assign(B.vertices().size(), -1);
-    for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
-      if (!hasEdgeOfKind(v, VertexKind::Convex) && hasEdgeOfKind(v, VertexKind::Reflex))
-      {
-        Generator3D corner = Generator3D::reflexCorner(B, v);
-        if (corner.cornerHasCone())
-        {
-          CornerGenerator[v] = static_cast<int>(Generators.size());
-          Generators.push_back(std::move(corner));
-        }
-      }
+    for (int g = 0; g < static_cast<int>(Generators.size()); ++g)
+      if (Generators[g].kind() == GeneratorKind3D::ReflexEdge)
+        EdgeGenerator[Generators[g].entity()] = g;
+      else if (Generators[g].kind() == GeneratorKind3D::ReflexCorner)
+        CornerGenerator[Generators[g].entity()] = g;
     std::vector<Box3> boxes;
     for (const Face3D& f : B.faces())
       boxes.push_back(f.patch.boundingBox());

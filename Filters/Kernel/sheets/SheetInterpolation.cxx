@@ -1,0 +1,715 @@
+#include "sheets/SheetInterpolation.h"
+
+#include "common/InputError.h"
+#include "geometry/ClosestPoint.h"
+#include "geometry/DomainTriangulation.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <set>
+
+namespace exactmat
+{
+
+double MedialSheetMesh::area() const
+{
+  double sum = 0.0;
+  for (const auto& t : triangles)
+    sum += 0.5 * (vertices[t[1]].x - vertices[t[0]].x).cross(vertices[t[2]].x - vertices[t[0]].x).norm();
+  return sum;
+}
+
+namespace
+{
+
+/// One side of a sheet's pair: a generator, or planar faces in one plane joined by smooth
+/// edges (a polygon split into a fan of triangles), which a ball touches as one face.
+class SheetSide
+{
+public:
+  SheetSide(const std::vector<Generator3D>& generators, const std::vector<int>& members)
+  {
+    for (int g : members)
+      Members.push_back(&generators[g]);
+  }
+  const Generator3D& first() const { return *Members.front(); }
+  const std::vector<const Generator3D*>& members() const { return Members; }
+  GeneratorKind3D kind() const { return first().kind(); }
+  Touch3D evaluate(const Vec2& q) const { return first().evaluate(q); }
+  Vec2 parameterOf(const Vec3& x) const { return first().parameterOf(x); }
+  Vec2 touchParameter(const Vec3& foot, const Vec3& centre) const
+  {
+    return Members.size() == 1 ? first().touchParameter(foot, centre) : first().parameterOf(foot);
+  }
+  Vec3 nearestPoint(const Vec3& x) const
+  {
+    Vec3 best = first().nearestPoint(x);
+    for (size_t k = 1; k < Members.size(); ++k)
+    {
+      const Vec3 p = Members[k]->nearestPoint(x);
+      if ((p - x).norm() < (best - x).norm())
+        best = p;
+    }
+    return best;
+  }
+  double distance(const Vec3& x) const
+  {
+    double d = first().distance(x);
+    for (size_t k = 1; k < Members.size(); ++k)
+      d = std::min(d, Members[k]->distance(x));
+    return d;
+  }
+  /// −1 when the touch at q lies on one of the members (within `tolerance`), else ≥ 0.
+  int exitSide(const Vec2& q, double tolerance) const
+  {
+    if (Members.size() == 1)
+      return first().exitSide(q, tolerance);
+    const Vec3 x = first().evaluate(q).point;
+    for (const Generator3D* m : Members)
+      if (m->exitSide(m->parameterOf(x), tolerance) < 0)
+        return -1;
+    return 0;
+  }
+  std::string name() const
+  {
+    std::string out = first().name();
+    if (Members.size() > 1)
+      out += " (with " + std::to_string(Members.size() - 1) + " coplanar face(s) across smooth edges)";
+    return out;
+  }
+
+private:
+  std::vector<const Generator3D*> Members;
+};
+
+class SheetBuilder
+
+{
+public:
+  SheetBuilder(const Boundary3D& boundary, const std::vector<Generator3D>& generators, const std::vector<int>& a,
+    const std::vector<int>& b, const SheetOptions& options)
+    : B(boundary)
+    , Options(options)
+    , Size(boundary.diagonal())
+    , Side{ { SheetSide(generators, a), SheetSide(generators, b) } }
+  {
+    Mesh.generators = { { a.front(), b.front() } };
+    Mesh.members = { { a, b } };
+    // Parameterise by a face when the pair has one (its touchpoint map is regular up to
+    // the border, radius 0 included); a reflex edge's or corner's angle is undefined there.
+    Mesh.parameterisedBy =
+      Side[0].kind() != GeneratorKind3D::Face && Side[1].kind() == GeneratorKind3D::Face ? 1 : 0;
+    P = Mesh.parameterisedBy;
+    O = 1 - P;
+    Touch = 1e-8 * Size;
+  }
+
+  std::string name() const { return "the sheet of " + Side[0].name() + " and " + Side[1].name(); }
+
+  MedialSheetMesh build(const std::vector<SheetBorderCurve>& curves, const std::vector<int>& convexEdges)
+  {
+    std::vector<std::vector<SheetVertex>> pieces;
+    for (const SheetBorderCurve& curve : curves)
+      addCurvePieces(curve, pieces);
+    for (int e : convexEdges)
+      pieces.push_back(convexEdgePiece(e));
+    if (pieces.empty())
+      fail("3D MAT sheets: ", name(), " has no border on its seams or convex edges");
+    if (std::getenv("EXACTMAT_SHEET_DEBUG"))
+      for (const auto& p : pieces)
+        std::fprintf(stderr, "%s piece %zu: %g %g %g (q %g %g) -> %g %g %g (q %g %g)\n", name().c_str(), p.size(),
+          p.front().x.x(), p.front().x.y(), p.front().x.z(), p.front().q[P].x(), p.front().q[P].y(),
+          p.back().x.x(), p.back().x.y(), p.back().x.z(), p.back().q[P].x(), p.back().q[P].y());
+    const std::vector<std::vector<SheetVertex>> loops = chain(pieces);
+    triangulate(loops);
+    return std::move(Mesh);
+  }
+
+private:
+  const Boundary3D& B;
+  const SheetOptions& Options;
+  double Size;
+  double Touch;
+  std::array<SheetSide, 2> Side;
+  int P = 0, O = 1; ///< which side carries the parameter domain, and the other
+  MedialSheetMesh Mesh;
+
+  // The parameter of g's touch of the ball (x, r), when the ball touches g there along
+  // g's normal (a touch on g's border counts; radius 0: x on g).
+  bool touches(const SheetSide& gen, const Vec3& x, double r, Vec2& q) const
+  {
+    const Vec3 foot = gen.nearestPoint(x);
+    if (r <= Touch)
+    {
+      q = gen.parameterOf(x);
+      return (foot - x).norm() <= Touch;
+    }
+    q = gen.touchParameter(foot, x);
+    const Touch3D t = gen.evaluate(q);
+    return (t.point + r * t.normal - x).norm() <= Touch && gen.exitSide(q, Touch) < 0;
+  }
+
+  // A ball of the curve on this sheet, with its touches; false when it is not.
+  bool onSheet(const Vec3& x, double r, SheetVertex& v) const
+  {
+    Vec2 qp, qo;
+    if (!touches(Side[P], x, r, qp) || !touches(Side[O], x, r, qo))
+      return false;
+    v.x = x;
+    v.r = r;
+    v.q[P] = qp;
+    v.q[O] = qo;
+    v.touch[P] = Side[P].evaluate(qp).point;
+    v.touch[O] = r <= Touch ? x : Side[O].evaluate(qo).point;
+    v.border = true;
+    return true;
+  }
+
+  void addCurvePieces(const SheetBorderCurve& curve, std::vector<std::vector<SheetVertex>>& pieces) const
+  {
+    std::vector<SheetVertex> run;
+    auto flush = [&]() {
+      if (run.size() >= 2)
+        pieces.push_back(run);
+      run.clear();
+    };
+    for (size_t i = 0; i < curve.centres.size(); ++i)
+    {
+      SheetVertex v;
+      if (onSheet(curve.centres[i], curve.radii[i], v))
+      {
+        v.source = i < curve.ids.size() ? curve.ids[i] : -1;
+        run.push_back(v);
+      }
+      else
+        flush();
+    }
+    flush();
+  }
+
+  // The convex edge's points, radius 0, sampled until chords are within the tolerance and
+  // no longer than maxEdge.
+  std::vector<SheetVertex> convexEdgePiece(int e) const
+  {
+    const Edge3D& edge = B.edges()[e];
+    const BezierCurve side = B.faces()[edge.faceA].patch.side(edge.sideA);
+    std::vector<double> ts{ 0.0 };
+    std::vector<std::pair<double, double>> todo{ { 0.0, 1.0 } };
+    std::vector<std::pair<double, double>> done;
+    for (int guard = 0; !todo.empty() && guard < 100000; ++guard)
+    {
+      auto [t0, t1] = todo.back();
+      todo.pop_back();
+      const Vec3 p0 = side.evaluate(t0), p1 = side.evaluate(t1), pm = side.evaluate(0.5 * (t0 + t1));
+      const bool split = t1 - t0 > 1e-6 &&
+        ((p1 - p0).norm() > Options.maxEdge * Size || (pm - 0.5 * (p0 + p1)).norm() > Options.tolerance * Size);
+      if (split)
+      {
+        todo.push_back({ 0.5 * (t0 + t1), t1 });
+        todo.push_back({ t0, 0.5 * (t0 + t1) });
+      }
+      else
+        ts.push_back(t1);
+    }
+    std::vector<SheetVertex> piece;
+    for (double t : ts)
+    {
+      SheetVertex v;
+      v.x = side.evaluate(t);
+      v.r = 0.0;
+      v.q[P] = Side[P].parameterOf(v.x);
+      v.q[O] = Side[O].parameterOf(v.x);
+      v.touch = { { v.x, v.x } };
+      v.border = true;
+      v.convexEdge = true;
+      piece.push_back(v);
+    }
+    return piece;
+  }
+
+  // The ball touching P at qp and O: Newton on (q_O, r) from the guess in v; the
+  // bracketed distance root when Newton does not land on O.
+  bool solve(const Vec2& qp, SheetVertex& v) const
+  {
+    const Touch3D tp = Side[P].evaluate(qp);
+    Vec2 qo = v.q[O];
+    double r = v.r;
+    if (!newton(tp, qo, r))
+    {
+      if (!bracket(tp, qo, r) || !newton(tp, qo, r))
+        return false;
+    }
+    if (r < -Touch || Side[O].exitSide(qo, Touch) >= 0)
+      return false;
+    v.x = tp.point + r * tp.normal;
+    v.r = std::max(r, 0.0);
+    v.q[P] = qp;
+    v.q[O] = qo;
+    v.touch[P] = tp.point;
+    v.touch[O] = Side[O].evaluate(qo).point;
+    v.source = -1;
+    v.border = v.convexEdge = false;
+    return true;
+  }
+
+  bool newton(const Touch3D& tp, Vec2& qo, double& r) const
+  {
+    for (int it = 0; it < 40; ++it)
+    {
+      const Touch3D to = Side[O].evaluate(qo);
+      const Vec3 f = tp.point + r * tp.normal - to.point - r * to.normal;
+      Eigen::Matrix3d j;
+      j.col(0) = -(to.dPoint.col(0) + r * to.dNormal.col(0));
+      j.col(1) = -(to.dPoint.col(1) + r * to.dNormal.col(1));
+      j.col(2) = tp.normal - to.normal;
+      const Vec3 d = j.colPivHouseholderQr().solve(-f);
+      if (!d.allFinite())
+        return false;
+      qo += d.head<2>();
+      r += d(2);
+      if (!std::isfinite(r) || std::abs(r) > 4.0 * Size)
+        return false;
+      if (d.norm() <= 1e-15 * (1.0 + qo.norm() + std::abs(r)) || f.norm() <= 1e-15 * Size)
+      {
+        const Touch3D end = Side[O].evaluate(qo);
+        return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= 1e-12 * Size;
+      }
+    }
+    const Touch3D end = Side[O].evaluate(qo);
+    return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= 1e-12 * Size;
+  }
+
+  // distance(S + rN, O) − r falls monotonically in r (a distance changes at most as fast
+  // as its argument moves): bisection between 0 and the first radius where it is negative.
+  bool bracket(const Touch3D& tp, Vec2& qo, double& r) const
+  {
+    auto f = [&](double s) { return Side[O].distance(tp.point + s * tp.normal) - s; };
+    double lo = 0.0, hi = std::max(f(0.0), 1e-3 * Size);
+    for (int k = 0; f(hi) >= 0.0; ++k)
+    {
+      if (k > 12)
+        return false;
+      lo = hi;
+      hi *= 2.0;
+    }
+    for (int k = 0; k < 80 && hi - lo > 1e-16 * Size; ++k)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (f(mid) >= 0.0 ? lo : hi) = mid;
+    }
+    r = 0.5 * (lo + hi);
+    const Vec3 x = tp.point + r * tp.normal;
+    qo = Side[O].touchParameter(Side[O].nearestPoint(x), x);
+    return true;
+  }
+
+  // Pieces joined into loops where they share a ball; free ends joined along straight
+  // lines of P's parameters.
+  std::vector<std::vector<SheetVertex>> chain(std::vector<std::vector<SheetVertex>>& pieces)
+  {
+    const double join = 1e-8 * Size;
+    std::vector<bool> used(pieces.size(), false);
+    std::vector<std::vector<SheetVertex>> loops;
+    const size_t guardMax = 4 * pieces.size() + 8;
+    for (size_t start = 0; start < pieces.size(); ++start)
+    {
+      if (used[start])
+        continue;
+      used[start] = true;
+      std::vector<SheetVertex> loop = pieces[start];
+      bool closed = false;
+      for (size_t guard = 0; guard < guardMax && !closed; ++guard)
+      {
+        const SheetVertex& end = loop.back();
+        if (loop.size() >= 3 && (end.x - loop.front().x).norm() <= join)
+        {
+          loop.pop_back();
+          closed = true;
+          break;
+        }
+        // A piece sharing the end's ball.
+        int next = -1;
+        bool reversed = false;
+        for (size_t j = 0; j < pieces.size() && next < 0; ++j)
+        {
+          if (used[j])
+            continue;
+          if ((pieces[j].front().x - end.x).norm() <= join)
+            next = static_cast<int>(j);
+          else if ((pieces[j].back().x - end.x).norm() <= join)
+          {
+            next = static_cast<int>(j);
+            reversed = true;
+          }
+        }
+        if (next < 0)
+        {
+          // None at the end: grow the loop at its start first (a gap is taken only
+          // between ends that share no ball with any piece).
+          int before = -1;
+          bool flip = false;
+          for (size_t j = 0; j < pieces.size() && before < 0; ++j)
+          {
+            if (used[j])
+              continue;
+            if ((pieces[j].back().x - loop.front().x).norm() <= join)
+              before = static_cast<int>(j);
+            else if ((pieces[j].front().x - loop.front().x).norm() <= join)
+            {
+              before = static_cast<int>(j);
+              flip = true;
+            }
+          }
+          if (before >= 0)
+          {
+            used[before] = true;
+            std::vector<SheetVertex> piece = pieces[before];
+            if (flip)
+              std::reverse(piece.begin(), piece.end());
+            loop.insert(loop.begin(), piece.begin(), piece.end() - 1);
+            continue;
+          }
+        }
+        if (next < 0)
+        {
+          // No partner: the border runs on along a side of P's or O's face (where the
+          // pair's sheet goes on as another pair's: across a smooth edge, onto a reflex
+          // edge). Join the nearest free end (or the loop's start) in P's parameters that
+          // lies on a side the end lies on and its own piece does not run along; the
+          // nearest of all when no end shares one.
+          const std::vector<std::pair<int, int>> endSides = freeSides(loop);
+          const Vec2 qe = end.q[P];
+          double best = std::numeric_limits<double>::infinity();
+          bool bestShares = false;
+          auto consider = [&](const SheetVertex& v, const std::vector<std::pair<int, int>>& sides, int j, bool rev) {
+            bool shares = false;
+            for (const auto& side : sides)
+              shares = shares || std::find(endSides.begin(), endSides.end(), side) != endSides.end();
+            const double d = (v.q[P] - qe).norm();
+            if ((shares && !bestShares) || (shares == bestShares && d < best))
+            {
+              best = d;
+              bestShares = shares;
+              next = j;
+              reversed = rev;
+            }
+          };
+          std::vector<SheetVertex> front(loop.rbegin(), loop.rend());
+          consider(loop.front(), freeSides(front), -1, false);
+          for (size_t j = 0; j < pieces.size(); ++j)
+          {
+            if (used[j])
+              continue;
+            std::vector<SheetVertex> backwards(pieces[j].rbegin(), pieces[j].rend());
+            consider(pieces[j].front(), freeSides(backwards), static_cast<int>(j), false);
+            consider(pieces[j].back(), freeSides(pieces[j]), static_cast<int>(j), true);
+          }
+          const SheetVertex& target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
+          appendGap(loop, target);
+          if (next < 0)
+          {
+            closed = true;
+            break;
+          }
+        }
+        used[next] = true;
+        std::vector<SheetVertex> piece = pieces[next];
+        if (reversed)
+          std::reverse(piece.begin(), piece.end());
+        const bool shared = (piece.front().x - loop.back().x).norm() <= join;
+        loop.insert(loop.end(), piece.begin() + (shared ? 1 : 0), piece.end());
+      }
+      if (!closed)
+        fail("3D MAT sheets: the border of ", name(), " does not close");
+      // Repeated parameters (a ball met twice along the border) would be one domain vertex.
+      std::vector<SheetVertex> clean;
+      for (const SheetVertex& v : densified(loop))
+        if (clean.empty() || (v.q[P] - clean.back().q[P]).norm() > 1e-14)
+          clean.push_back(v);
+      while (clean.size() > 1 && (clean.back().q[P] - clean.front().q[P]).norm() <= 1e-14)
+        clean.pop_back();
+      if (clean.size() < 3)
+        continue; // a stretch that folds back on itself bounds no area
+      loops.push_back(std::move(clean));
+    }
+    if (loops.empty())
+      fail("3D MAT sheets: the border of ", name(), " encloses no area");
+    return loops;
+  }
+
+  // The face sides (generator, patch side) the last vertex of `run` touches its faces
+  // on, leaving out those the run's middle lies on too (the side it runs along).
+  std::vector<std::pair<int, int>> freeSides(const std::vector<SheetVertex>& run) const
+  {
+    const double near = 1e-7 * Size;
+    std::vector<std::pair<int, int>> out;
+    for (int g : { P, O })
+      for (const Generator3D* member : Side[g].members())
+      {
+        if (member->kind() != GeneratorKind3D::Face)
+          continue;
+        const BezierPatch& patch = B.faces()[member->entity()].patch;
+        for (int side = 0; side < 4; ++side)
+        {
+        const BezierCurve curve = patch.side(side);
+        if ((curve.endPoint() - curve.startPoint()).norm() <= near && curve.degree() <= 1)
+          continue; // a collapsed side (a triangle's corner)
+        auto on = [&](const Vec3& touch) { return closestPoint(curve, touch).distance <= near; };
+        // The run's middle: its middle vertex, or the chord's midpoint for two.
+        const Vec3 middle = run.size() >= 3 ? run[run.size() / 2].touch[g]
+                                            : 0.5 * (run.front().touch[g] + run.back().touch[g]);
+        if (on(run.back().touch[g]) && !(run.size() >= 2 && on(middle)))
+          out.emplace_back(member->entity(), side);
+        }
+      }
+    return out;
+  }
+
+  // The loop with border edges no longer than maxEdge: sheet points solved on the chords
+  // in P's parameters (exact sheet points; on a straight seam between planar faces, exact
+  // seam points). Refinement never splits a border edge, so a long one would leave slivers.
+  std::vector<SheetVertex> densified(const std::vector<SheetVertex>& loop) const
+  {
+    std::vector<SheetVertex> out;
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      const SheetVertex& a = loop[i];
+      const SheetVertex& b = loop[(i + 1) % loop.size()];
+      out.push_back(a);
+      const int n = std::min(10000, static_cast<int>(std::ceil((b.x - a.x).norm() / (Options.maxEdge * Size))));
+      for (int k = 1; k < n; ++k)
+      {
+        const double s = static_cast<double>(k) / n;
+        SheetVertex v = a;
+        v.r = (1.0 - s) * a.r + s * b.r;
+        v.q[O] = (1.0 - s) * a.q[O] + s * b.q[O];
+        if (solve((1.0 - s) * a.q[P] + s * b.q[P], v))
+        {
+          v.border = true;
+          v.convexEdge = a.convexEdge && b.convexEdge && v.r <= Touch;
+          out.push_back(v);
+        }
+      }
+    }
+    return out;
+  }
+
+  // Border points along the straight line in P's parameters from the loop's end to
+  // `target` (exclusive at both ends), spaced by maxEdge in space.
+  void appendGap(std::vector<SheetVertex>& loop, const SheetVertex& target)
+  {
+    const SheetVertex from = loop.back();
+    const double length = (target.x - from.x).norm();
+    const int n = std::min(10000, static_cast<int>(std::ceil(length / (Options.maxEdge * Size))));
+    for (int k = 1; k < n; ++k)
+    {
+      const double s = static_cast<double>(k) / n;
+      SheetVertex v = from;
+      v.r = (1.0 - s) * from.r + s * target.r;
+      v.q[O] = (1.0 - s) * from.q[O] + s * target.q[O];
+      if (!solve((1.0 - s) * from.q[P] + s * target.q[P], v))
+        fail("3D MAT sheets: the border of ", name(), " has an open end that cannot be closed along ",
+          Side[P].name());
+      v.border = true;
+      loop.push_back(v);
+      ++Mesh.gapVertices;
+    }
+  }
+
+  void triangulate(const std::vector<std::vector<SheetVertex>>& loops)
+  {
+    std::vector<std::vector<Vec2>> domain;
+    for (const auto& loop : loops)
+    {
+      domain.emplace_back();
+      for (const SheetVertex& v : loop)
+      {
+        domain.back().push_back(v.q[P]);
+        Mesh.vertices.push_back(v);
+      }
+    }
+    Mesh.loops = static_cast<int>(loops.size());
+    std::unique_ptr<DomainTriangulation> t;
+    try
+    {
+      t = std::make_unique<DomainTriangulation>(domain);
+    }
+    catch (const InputError& e)
+    {
+      fail("3D MAT sheets: the domain of ", name(), " on ", Side[P].name(), " cannot be triangulated: ", e.what());
+    }
+    std::set<std::array<int, 3>> accepted;
+    double worst = 0.0;
+    for (int round = 0; round < 200; ++round)
+    {
+      int inserted = 0;
+      for (const auto& tri : t->triangles())
+      {
+        std::array<int, 3> key = tri;
+        std::sort(key.begin(), key.end());
+        if (accepted.count(key))
+          continue;
+        const SheetVertex& a = Mesh.vertices[tri[0]];
+        const SheetVertex& b = Mesh.vertices[tri[1]];
+        const SheetVertex& c = Mesh.vertices[tri[2]];
+        const double longest = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
+        SheetVertex centroid = a;
+        centroid.r = (a.r + b.r + c.r) / 3.0;
+        centroid.q[O] = (a.q[O] + b.q[O] + c.q[O]) / 3.0;
+        const Vec2 q = (a.q[P] + b.q[P] + c.q[P]) / 3.0;
+        if (!solve(q, centroid))
+        {
+          // The centroid's ball misses O's entity: the domain's border chord cuts outside
+          // the exact border there (curved seams). The triangle stays; its vertices are exact.
+          accepted.insert(key);
+          continue;
+        }
+        const double deviation =
+          std::max((centroid.x - (a.x + b.x + c.x) / 3.0).norm(), std::abs(centroid.r - (a.r + b.r + c.r) / 3.0));
+        // A sliver along the border (its centroid about as near the border chord as the
+        // chord is to the exact border) is not split further: its centroid would crowd
+        // towards a border edge that refinement never splits.
+        const double area = 0.5 * (b.x - a.x).cross(c.x - a.x).norm();
+        const bool sliver = 2.0 * area / std::max(longest, 1e-300) <= 1e-3 * Options.maxEdge * Size;
+        if (sliver || (longest <= Options.maxEdge * Size && deviation <= Options.tolerance * Size))
+        {
+          accepted.insert(key);
+          worst = std::max(worst, deviation);
+          continue;
+        }
+        if (t->insert(q) < 0)
+        {
+          accepted.insert(key);
+          worst = std::max(worst, deviation);
+          continue;
+        }
+        Mesh.vertices.push_back(centroid);
+        ++inserted;
+        if (static_cast<int>(Mesh.vertices.size()) > Options.maxVertices)
+          fail("3D MAT sheets: ", name(), " needs more than ", Options.maxVertices, " vertices");
+      }
+      if (inserted == 0)
+        break;
+    }
+    Mesh.triangles = t->triangles();
+    // Only the final triangles' deviations count.
+    worst = 0.0;
+    for (const auto& tri : Mesh.triangles)
+    {
+      const SheetVertex& a = Mesh.vertices[tri[0]];
+      const SheetVertex& b = Mesh.vertices[tri[1]];
+      const SheetVertex& c = Mesh.vertices[tri[2]];
+      SheetVertex centroid = a;
+      centroid.r = (a.r + b.r + c.r) / 3.0;
+      centroid.q[O] = (a.q[O] + b.q[O] + c.q[O]) / 3.0;
+      if (solve((a.q[P] + b.q[P] + c.q[P]) / 3.0, centroid))
+        worst = std::max(worst, std::max((centroid.x - (a.x + b.x + c.x) / 3.0).norm(),
+                                  std::abs(centroid.r - (a.r + b.r + c.r) / 3.0)));
+    }
+    Mesh.maxDeviation = worst / Size;
+  }
+};
+
+} // namespace
+
+std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g)
+{
+  std::vector<int> members{ g };
+  if (generators[g].kind() != GeneratorKind3D::Face || !generators[g].planar())
+    return members;
+  const double tolerance = 1e-9 * boundary.diagonal();
+  // Faces reached through smooth edges, in the first face's plane.
+  for (size_t k = 0; k < members.size(); ++k)
+    for (const Edge3D& e : boundary.edges())
+    {
+      if (e.kind != VertexKind::Smooth || (e.faceA != members[k] && e.faceB != members[k]))
+        continue;
+      const int other = e.faceA == members[k] ? e.faceB : e.faceA;
+      if (std::find(members.begin(), members.end(), other) == members.end() && generators[other].planar() &&
+        generators[g].coplanar(generators[other], tolerance))
+        members.push_back(other);
+    }
+  std::sort(members.begin(), members.end());
+  return members;
+}
+
+MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const std::vector<int>& a, const std::vector<int>& b, const std::vector<SheetBorderCurve>& curves,
+  const std::vector<int>& convexEdges, const SheetOptions& options)
+{
+  auto valid = [&generators](const std::vector<int>& side) {
+    for (int g : side)
+      if (g < 0 || g >= static_cast<int>(generators.size()))
+        return false;
+    return !side.empty();
+  };
+  if (!valid(a) || !valid(b))
+    fail("3D MAT sheets: a pair of generators that are not the solid's ", generators.size());
+  SheetBuilder builder(boundary, generators, a, b, options);
+  return builder.build(curves, convexEdges);
+}
+
+std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
+  const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures)
+{
+  const std::vector<Generator3D> generators = medialGenerators(boundary);
+  // The traced sheets (one per generator pair) grouped by their sides.
+  std::map<std::pair<std::vector<int>, std::vector<int>>, std::vector<int>> groups;
+  std::vector<std::pair<std::vector<int>, std::vector<int>>> order;
+  for (size_t s = 0; s < mat.sheets.size(); ++s)
+  {
+    std::vector<int> a = sheetSide(boundary, generators, mat.sheets[s].generatorA);
+    std::vector<int> b = sheetSide(boundary, generators, mat.sheets[s].generatorB);
+    if (b < a)
+      std::swap(a, b);
+    const std::pair<std::vector<int>, std::vector<int>> k{ a, b };
+    if (!groups.count(k))
+      order.push_back(k);
+    groups[k].push_back(static_cast<int>(s));
+  }
+  std::vector<MedialSheetMesh> out;
+  for (const auto& key : order)
+  {
+    std::vector<SheetBorderCurve> curves;
+    std::set<int> seams, edges;
+    for (int s : groups[key])
+    {
+      seams.insert(mat.sheets[s].seams.begin(), mat.sheets[s].seams.end());
+      edges.insert(mat.sheets[s].convexEdges.begin(), mat.sheets[s].convexEdges.end());
+    }
+    for (int k : seams)
+    {
+      SheetBorderCurve curve;
+      const std::vector<MedialBall3D>& balls = mat.seams[k].balls;
+      for (size_t i = 0; i < balls.size(); ++i)
+      {
+        curve.centres.push_back(balls[i].x);
+        curve.radii.push_back(balls[i].r);
+        curve.ids.push_back(static_cast<int>(i));
+      }
+      curves.push_back(std::move(curve));
+    }
+    try
+    {
+      out.push_back(interpolateSheet(boundary, generators, key.first, key.second, curves,
+        std::vector<int>(edges.begin(), edges.end()), options));
+    }
+    catch (const InputError& e)
+    {
+      failures.emplace_back(static_cast<int>(out.size()), e.what());
+      out.emplace_back();
+      out.back().generators = { { key.first.front(), key.second.front() } };
+      out.back().members = { { key.first, key.second } };
+    }
+    out.back().traced = groups[key];
+  }
+  return out;
+}
+
+} // namespace exactmat

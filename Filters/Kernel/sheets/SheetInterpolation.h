@@ -1,0 +1,92 @@
+#pragma once
+/// @file SheetInterpolation.h
+/// @brief A medial sheet of a solid as triangles (thesis §6.3.9, DESIGN.md §3 "Sheets"):
+/// every vertex the centre of a ball touching both generators of the sheet's pair.
+///
+/// The sheet is parameterised by the touchpoint q on one generator of its pair, P (a face
+/// when the pair has one): for each q the ball touching P at q and the other generator O
+/// is found by Newton on S_P(q) + r·N_P(q) = S_O(q_O) + r·N_O(q_O) (unknowns q_O and r),
+/// from a neighbour, or — when that does not converge — by bracketing the root of the
+/// monotone function r ↦ distance(S_P + r·N_P, O) − r and polishing. The sheet's domain in
+/// q is bounded by the P-touchpoints of the balls on its border: the stretches of the given
+/// seams whose balls touch both P and O (checked, not assumed: a seam's triplet changes
+/// where a touchpoint moves onto a reflex edge), and its convex edges (radius 0). Pieces
+/// are joined where they share a ball; an end with no partner is joined to the nearest
+/// free end along a straight line in q (the side of P's domain, where the sheet of P and O
+/// continues as the sheet of P's reflex edge and O), solved point by point. The domain is
+/// triangulated with CGAL's constrained Delaunay triangulation (DomainTriangulation) and
+/// refined by centroids until every triangle's centroid is within `tolerance` of the exact
+/// sheet (position and radius) and no edge is longer than `maxEdge`.
+
+#include "mat3d/Generator3D.h"
+#include "mat3d/MAT3D.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace exactmat
+{
+
+/// A curve of medial balls on (part of) a sheet's border: a seam, in order.
+struct SheetBorderCurve
+{
+  Vec3List centres;
+  std::vector<double> radii;
+  std::vector<int> ids; ///< the caller's numbering of the points (kept on the sheet's vertices)
+};
+
+struct SheetOptions
+{
+  double tolerance = 1e-4; ///< centroid deviation (position, radius), fraction of the size
+  double maxEdge = 0.05;   ///< longest triangle edge, fraction of the size
+  int maxVertices = 200000;
+};
+
+struct SheetVertex
+{
+  Vec3 x = Vec3::Zero();
+  double r = 0.0;
+  /// Touchpoint parameters and touchpoints on the pair's generators, in the order given.
+  std::array<Vec2, 2> q{ { Vec2::Zero(), Vec2::Zero() } };
+  std::array<Vec3, 2> touch{ { Vec3::Zero(), Vec3::Zero() } };
+  int source = -1;       ///< the border curve point it is (SheetBorderCurve::ids), or −1
+  bool border = false;   ///< on the sheet's border (from a curve, a convex edge or a gap)
+  bool convexEdge = false; ///< radius 0 on a convex edge of the solid
+};
+
+struct MedialSheetMesh
+{
+  std::array<int, 2> generators{ { -1, -1 } };       ///< each side's first generator
+  std::array<std::vector<int>, 2> members;          ///< each side's generators (sheetSide)
+  std::vector<int> traced;                          ///< the MAT3D::sheets it joins (interpolateSheets)
+  int parameterisedBy = 0;  ///< 0 or 1: which of the pair carries the parameter domain
+  std::vector<SheetVertex> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  int loops = 0;            ///< border loops (1 + holes, or several pieces)
+  int gapVertices = 0;      ///< border vertices solved along a side of P's domain
+  double maxDeviation = 0.0; ///< largest centroid deviation of the final triangles, fraction of the size
+  double area() const;
+};
+
+/// One side of a sheet's pair as generator indices (medialGenerators' numbering): g
+/// itself, or — for a planar face — every face in its plane reached through smooth edges
+/// (a polygon split into a fan of triangles is one face to the sheets), sorted.
+std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g);
+
+/// The sheet between sides a and b (sheetSide) bounded by `curves` (seams; only their
+/// stretches on this sheet are used) and the convex edges `convexEdges` (Boundary3D
+/// indices). Throws InputError naming the sheet when its border does not close or its
+/// domain cannot be triangulated.
+MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const std::vector<int>& a, const std::vector<int>& b, const std::vector<SheetBorderCurve>& curves,
+  const std::vector<int>& convexEdges, const SheetOptions& options = {});
+
+/// Every sheet of a traced MAT: MAT3D::sheets grouped by their sides (sheetSide), each
+/// group's border from its seams' balls (ids: the ball's index along its seam) and convex
+/// edges. A sheet that cannot be interpolated is left empty (no triangles) and its reason
+/// put in `failures` (its index in the result and the InputError's message).
+std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
+  const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures);
+
+} // namespace exactmat
