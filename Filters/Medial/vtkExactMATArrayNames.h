@@ -28,7 +28,8 @@
  * finite); vtkMAT3DFilter also `Footpoint0`, `Footpoint1`, `Footpoint2` (3-vectors: the
  * ball's touchpoints — a seam point's three, a junction's first three, the vertex on a rim
  * or at radius 0). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
- * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet, 6 mid-sheet),
+ * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet, 6 mid-sheet,
+ * 7 sheet of a free-form solid),
  * `ElementId`
  * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
  * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.
@@ -38,6 +39,9 @@
  * `SheetGovernors` (string: the FaceIds of the sheet's face pair, "0,4"), `SheetSeams`
  * (string: the ElementIds of the seams on its border, "5 9 12"), `SheetConvexEdges` (string:
  * the face pairs of the convex edges on its border, where its radius is 0, "0/4").
+ * vtkSheetInterpolator adds the sheets as triangles (`ElementType` 7) with cell data
+ * `SheetId` (int: the sheet's tuple above, −1 for other cells) and field data
+ * `SheetStatus` (int per tuple: 1 interpolated, 0 empty, −1 failed) and `SheetMessage`.
  *
  * Verification (field data of every MAT output, when VerifyOutput is on):
  * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
@@ -77,6 +81,9 @@ constexpr const char* Governors = "Governors";
 constexpr const char* SheetGovernors = "SheetGovernors";
 constexpr const char* SheetSeams = "SheetSeams";
 constexpr const char* SheetConvexEdges = "SheetConvexEdges";
+constexpr const char* SheetId = "SheetId";
+constexpr const char* SheetStatus = "SheetStatus";
+constexpr const char* SheetMessage = "SheetMessage";
 constexpr const char* VerificationStatus = "VerificationStatus";
 constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
 constexpr const char* VerificationReport = "VerificationReport";

@@ -67,18 +67,8 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   const exactmat::MAT3D mat = exactmat::computeMAT3D(boundary, options);
   result.measure("TracingSeconds", secondsSince(t0));
   const exactmat::MedialComplex complex = mat.complex();
-  auto faceId = [&boundary](int f) {
-    const exactmat::Face3D& face = boundary.faces()[f];
-    return std::to_string(face.entity >= 0 ? face.entity : face.piece);
-  };
-  // A generator as the user's face ids: a face's id; a reflex edge's or corner's faces
-  // joined by "/".
-  auto generatorId = [&mat, &faceId](int g) {
-    std::string out;
-    for (int f : mat.generators[g].faces)
-      out += (out.empty() ? "" : "/") + faceId(f);
-    return out;
-  };
+  auto faceId = [&boundary](int f) { return exactmat::faceLabel(boundary, f); };
+  auto generatorId = [&mat, &boundary](int g) { return exactmat::generatorLabel(boundary, mat.generators[g].faces); };
   auto generatorIds = [&generatorId](const exactmat::MedialElement& e) {
     std::string out;
     for (int g : e.governors)

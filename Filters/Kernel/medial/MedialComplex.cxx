@@ -47,6 +47,8 @@ const char* toString(MedialElementType type)
       return "profile-sheet";
     case MedialElementType::MidSheet:
       return "mid-sheet";
+    case MedialElementType::Sheet:
+      return "sheet";
   }
   return "?";
 }

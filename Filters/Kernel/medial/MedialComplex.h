@@ -36,7 +36,8 @@ enum class MedialElementType
   CentreCurve = 3,   ///< a polyline of CircleCentre points
   SweptSheet = 4,    ///< triangles: a profile MAT segment swept between its seams
   ProfileSheet = 5,  ///< triangles: between a profile face and one side (or reflex edge)
-  MidSheet = 6       ///< triangles: between the two profile faces (spans < 2·Rmax)
+  MidSheet = 6,      ///< triangles: between the two profile faces (spans < 2·Rmax)
+  Sheet = 7          ///< triangles: a free-form solid's sheet between a generator pair (sheets/)
 };
 
 const char* toString(MedialElementType type);

@@ -121,6 +121,18 @@ public:
       pieces.push_back(convexEdgePiece(e));
     if (pieces.empty())
       fail("3D MAT sheets: ", name(), " has no border on its seams or convex edges");
+    // Pieces whose balls are all one (a degenerate junction's triplets repeat it) bound
+    // nothing; a pair with no other border has no sheet: nothing to fill, nothing wrong.
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
+                   [this](const std::vector<SheetVertex>& piece) {
+                     for (const SheetVertex& v : piece)
+                       if ((v.x - piece.front().x).norm() > 1e-8 * Size)
+                         return false;
+                     return true;
+                   }),
+      pieces.end());
+    if (pieces.empty())
+      return std::move(Mesh);
     if (std::getenv("EXACTMAT_SHEET_DEBUG"))
       for (const auto& p : pieces)
         std::fprintf(stderr, "%s piece %zu: %g %g %g (q %g %g) -> %g %g %g (q %g %g)\n", name().c_str(), p.size(),
@@ -471,33 +483,39 @@ private:
     return out;
   }
 
-  // The loop with border edges no longer than maxEdge: sheet points solved on the chords
-  // in P's parameters (exact sheet points; on a straight seam between planar faces, exact
-  // seam points). Refinement never splits a border edge, so a long one would leave slivers.
+  // The loop with border edges no longer than maxEdge and within the tolerance of the
+  // sheet at their middles: sheet points solved on the chords in P's parameters (exact
+  // sheet points; on a straight seam between planar faces, exact seam points). Refinement
+  // never splits a border edge, so a long or sagging one would leave slivers.
   std::vector<SheetVertex> densified(const std::vector<SheetVertex>& loop) const
   {
     std::vector<SheetVertex> out;
     for (size_t i = 0; i < loop.size(); ++i)
     {
-      const SheetVertex& a = loop[i];
-      const SheetVertex& b = loop[(i + 1) % loop.size()];
-      out.push_back(a);
-      const int n = std::min(10000, static_cast<int>(std::ceil((b.x - a.x).norm() / (Options.maxEdge * Size))));
-      for (int k = 1; k < n; ++k)
-      {
-        const double s = static_cast<double>(k) / n;
-        SheetVertex v = a;
-        v.r = (1.0 - s) * a.r + s * b.r;
-        v.q[O] = (1.0 - s) * a.q[O] + s * b.q[O];
-        if (solve((1.0 - s) * a.q[P] + s * b.q[P], v))
-        {
-          v.border = true;
-          v.convexEdge = a.convexEdge && b.convexEdge && v.r <= Touch;
-          out.push_back(v);
-        }
-      }
+      out.push_back(loop[i]);
+      split(loop[i], loop[(i + 1) % loop.size()], 0, out);
     }
     return out;
+  }
+
+  // Appends the points strictly between a and b that the border edge needs.
+  void split(const SheetVertex& a, const SheetVertex& b, int depth, std::vector<SheetVertex>& out) const
+  {
+    if (depth > 16)
+      return;
+    SheetVertex m = a;
+    m.r = 0.5 * (a.r + b.r);
+    m.q[O] = 0.5 * (a.q[O] + b.q[O]);
+    if (!solve(0.5 * (a.q[P] + b.q[P]), m))
+      return;
+    const double deviation = std::max((m.x - 0.5 * (a.x + b.x)).norm(), std::abs(m.r - 0.5 * (a.r + b.r)));
+    if ((b.x - a.x).norm() <= Options.maxEdge * Size && deviation <= Options.tolerance * Size)
+      return;
+    m.border = true;
+    m.convexEdge = a.convexEdge && b.convexEdge && m.r <= Touch;
+    split(a, m, depth + 1, out);
+    out.push_back(m);
+    split(m, b, depth + 1, out);
   }
 
   // Border points along the straight line in P's parameters from the loop's end to
@@ -613,6 +631,13 @@ private:
                                   std::abs(centroid.r - (a.r + b.r + c.r) / 3.0)));
     }
     Mesh.maxDeviation = worst / Size;
+    // Refinement stops at slivers along the border; a sheet still far from the exact one
+    // there is parameterised where that degenerates (a rim where the balls touch one
+    // point of P whatever their radius): refused, not output approximately.
+    if (Mesh.maxDeviation > 10.0 * Options.tolerance)
+      fail("3D MAT sheets: the triangles of ", name(), " deviate from the exact sheet by ", Mesh.maxDeviation,
+        " of the size (tolerance ", Options.tolerance, "): its parameterisation by ", Side[P].name(),
+        " degenerates");
   }
 };
 
@@ -639,6 +664,25 @@ std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generat
   return members;
 }
 
+std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const std::vector<std::array<int, 2>>& pairs)
+{
+  std::map<std::pair<std::vector<int>, std::vector<int>>, int> index;
+  std::vector<SheetGroup> out;
+  for (size_t s = 0; s < pairs.size(); ++s)
+  {
+    std::vector<int> a = sheetSide(boundary, generators, pairs[s][0]);
+    std::vector<int> b = sheetSide(boundary, generators, pairs[s][1]);
+    if (b < a)
+      std::swap(a, b);
+    auto [it, added] = index.insert({ { a, b }, static_cast<int>(out.size()) });
+    if (added)
+      out.push_back({ a, b, {} });
+    out[it->second].traced.push_back(static_cast<int>(s));
+  }
+  return out;
+}
+
 MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<int>& a, const std::vector<int>& b, const std::vector<SheetBorderCurve>& curves,
   const std::vector<int>& convexEdges, const SheetOptions& options)
@@ -659,26 +703,16 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures)
 {
   const std::vector<Generator3D> generators = medialGenerators(boundary);
-  // The traced sheets (one per generator pair) grouped by their sides.
-  std::map<std::pair<std::vector<int>, std::vector<int>>, std::vector<int>> groups;
-  std::vector<std::pair<std::vector<int>, std::vector<int>>> order;
-  for (size_t s = 0; s < mat.sheets.size(); ++s)
-  {
-    std::vector<int> a = sheetSide(boundary, generators, mat.sheets[s].generatorA);
-    std::vector<int> b = sheetSide(boundary, generators, mat.sheets[s].generatorB);
-    if (b < a)
-      std::swap(a, b);
-    const std::pair<std::vector<int>, std::vector<int>> k{ a, b };
-    if (!groups.count(k))
-      order.push_back(k);
-    groups[k].push_back(static_cast<int>(s));
-  }
+  std::vector<std::array<int, 2>> pairs;
+  for (const MAT3DSheet& sheet : mat.sheets)
+    pairs.push_back({ { sheet.generatorA, sheet.generatorB } });
+  const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
   std::vector<MedialSheetMesh> out;
-  for (const auto& key : order)
+  for (const SheetGroup& group : groups)
   {
     std::vector<SheetBorderCurve> curves;
     std::set<int> seams, edges;
-    for (int s : groups[key])
+    for (int s : group.traced)
     {
       seams.insert(mat.sheets[s].seams.begin(), mat.sheets[s].seams.end());
       edges.insert(mat.sheets[s].convexEdges.begin(), mat.sheets[s].convexEdges.end());
@@ -697,17 +731,17 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     }
     try
     {
-      out.push_back(interpolateSheet(boundary, generators, key.first, key.second, curves,
+      out.push_back(interpolateSheet(boundary, generators, group.a, group.b, curves,
         std::vector<int>(edges.begin(), edges.end()), options));
     }
     catch (const InputError& e)
     {
       failures.emplace_back(static_cast<int>(out.size()), e.what());
       out.emplace_back();
-      out.back().generators = { { key.first.front(), key.second.front() } };
-      out.back().members = { { key.first, key.second } };
+      out.back().generators = { { group.a.front(), group.b.front() } };
+      out.back().members = { { group.a, group.b } };
     }
-    out.back().traced = groups[key];
+    out.back().traced = group.traced;
   }
   return out;
 }

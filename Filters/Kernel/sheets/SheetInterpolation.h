@@ -74,6 +74,15 @@ struct MedialSheetMesh
 /// (a polygon split into a fan of triangles is one face to the sheets), sorted.
 std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g);
 
+/// Traced sheets (generator pairs) that are one sheet: the same two sides.
+struct SheetGroup
+{
+  std::vector<int> a, b;    ///< the sides (sheetSide), a < b
+  std::vector<int> traced;  ///< indices into the given pairs
+};
+std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const std::vector<std::array<int, 2>>& pairs);
+
 /// The sheet between sides a and b (sheetSide) bounded by `curves` (seams; only their
 /// stretches on this sheet are used) and the convex edges `convexEdges` (Boundary3D
 /// indices). Throws InputError naming the sheet when its border does not close or its

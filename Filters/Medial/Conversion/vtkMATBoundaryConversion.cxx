@@ -473,4 +473,18 @@ void BoundaryGridBuilder::addShape(const Shape& shape)
   }
 }
 
+std::string faceLabel(const Boundary3D& boundary, int face)
+{
+  const Face3D& f = boundary.faces()[face];
+  return std::to_string(f.entity >= 0 ? f.entity : f.piece);
+}
+
+std::string generatorLabel(const Boundary3D& boundary, const std::vector<int>& faces)
+{
+  std::string out;
+  for (int f : faces)
+    out += (out.empty() ? "" : "/") + faceLabel(boundary, f);
+  return out;
+}
+
 } // namespace exactmat

@@ -20,6 +20,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace exactmat
@@ -32,6 +33,13 @@ std::vector<CurvePiece> curvePiecesFromGrid(vtkUnstructuredGrid* grid);
 
 /// The surface cells of `grid` as B-rep pieces (triangles keep their triangular net).
 std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid);
+
+/// A face as the user knows it: its FaceId (the entity), or its cell's index when the grid
+/// has none.
+std::string faceLabel(const Boundary3D& boundary, int face);
+/// A generator of a solid's MAT (a face, a reflex edge or a reflex corner) by the faces it
+/// lies on: "4", "12/13", "3/9/10".
+std::string generatorLabel(const Boundary3D& boundary, const std::vector<int>& faces);
 
 /// True when the grid holds surface cells (a 3D boundary), false for curve cells.
 bool gridHasSurfaceCells(vtkUnstructuredGrid* grid);

@@ -1,0 +1,419 @@
+#include "vtkSheetInterpolator.h"
+
+#include "vtkMATBoundaryConversion.h"
+#include "vtkMATComplexOutput.h"
+#include "vtkMATThreads.h"
+#include "vtkMATVerificationReport.h"
+
+#include "brep/NormalisePieces.h"
+#include "common/InputError.h"
+#include "mat3d/PatchBoundary.h"
+#include "medial/Verification.h"
+#include "sheets/SheetInterpolation.h"
+
+#include "vtkExactMATArrayNames.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+vtkStandardNewMacro(vtkSheetInterpolator);
+
+vtkSheetInterpolator::vtkSheetInterpolator()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkSheetInterpolator::~vtkSheetInterpolator() = default;
+
+void vtkSheetInterpolator::SetSourceConnection(vtkAlgorithmOutput* algOutput)
+{
+  this->SetInputConnection(1, algOutput);
+}
+
+void vtkSheetInterpolator::SetSourceData(vtkDataObject* source)
+{
+  this->SetInputData(1, source);
+}
+
+int vtkSheetInterpolator::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  return 1;
+}
+
+namespace
+{
+using namespace exactmat;
+
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::vector<std::string> words(const std::string& text, char separator)
+{
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string word;
+  while (std::getline(in, word, separator))
+    if (!word.empty())
+      out.push_back(word);
+  return out;
+}
+
+vtkStringArray* fieldStrings(vtkPolyData* data, const char* name)
+{
+  return vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+}
+
+// vtkMAT3DFilter's output back in the solid's unit frame: points with radius, type,
+// contacts and touches; elements in ElementId order with their Governors text.
+struct InputComplex
+{
+  MedialComplex complex;
+  std::vector<std::string> governors;
+};
+
+InputComplex readComplex(vtkPolyData* mat, const Normalisation& frame)
+{
+  InputComplex in;
+  vtkDataArray* radius = mat->GetPointData()->GetArray(arrays::Radius);
+  vtkDataArray* type = mat->GetPointData()->GetArray(arrays::PointType);
+  vtkDataArray* contacts = mat->GetPointData()->GetArray(arrays::Touchpoints);
+  vtkDataArray* elementId = mat->GetCellData()->GetArray(arrays::ElementId);
+  vtkDataArray* elementType = mat->GetCellData()->GetArray(arrays::ElementType);
+  auto* governors = vtkStringArray::SafeDownCast(mat->GetCellData()->GetAbstractArray(arrays::Governors));
+  if (!radius || !type || !elementId || !elementType || !fieldStrings(mat, arrays::SheetGovernors) ||
+    !fieldStrings(mat, arrays::SheetSeams))
+    fail("input 0 is not vtkMAT3DFilter's output: it lacks Radius, PointType, ElementId, ElementType or the "
+         "sheets' topology (SheetGovernors, SheetSeams)");
+  const char* footNames[3] = { arrays::Footpoint0, arrays::Footpoint1, arrays::Footpoint2 };
+  for (vtkIdType i = 0; i < mat->GetNumberOfPoints(); ++i)
+  {
+    MedialPoint3D p;
+    double x[3];
+    mat->GetPoint(i, x);
+    p.x = frame.toUnit(Vec3(x[0], x[1], x[2]));
+    p.radius = frame.lengthToUnit(radius->GetTuple1(i));
+    p.type = static_cast<MedialPoint3DType>(static_cast<int>(type->GetTuple1(i)));
+    p.contacts = contacts ? static_cast<int>(contacts->GetTuple1(i)) : 0;
+    for (const char* name : footNames)
+      if (vtkDataArray* foot = mat->GetPointData()->GetArray(name))
+      {
+        const double* f = foot->GetTuple3(i);
+        const Vec3 t = frame.toUnit(Vec3(f[0], f[1], f[2]));
+        if (t.allFinite() && (p.touches.empty() || p.touches.back() != t))
+          p.touches.push_back(t);
+      }
+    in.complex.points.push_back(p);
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mat->GetNumberOfCells(); ++c)
+  {
+    const int e = static_cast<int>(elementId->GetTuple1(c));
+    if (e < 0 || e > 100000000)
+      fail("input 0: cell ", c, " has ElementId ", e);
+    if (e >= static_cast<int>(in.complex.elements.size()))
+    {
+      in.complex.elements.resize(e + 1);
+      in.governors.resize(e + 1);
+    }
+    MedialElement& el = in.complex.elements[e];
+    el.type = static_cast<MedialElementType>(static_cast<int>(elementType->GetTuple1(c)));
+    if (governors)
+      in.governors[e] = governors->GetValue(c);
+    mat->GetCellPoints(c, ids);
+    if (mat->GetCellType(c) == VTK_TRIANGLE && ids->GetNumberOfIds() == 3)
+      el.triangles.push_back({ { static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+        static_cast<int>(ids->GetId(2)) } });
+    else
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        el.points.push_back(static_cast<int>(ids->GetId(k)));
+  }
+  return in;
+}
+} // namespace
+
+int vtkSheetInterpolator::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* mat = vtkPolyData::GetData(inputVector[0]);
+  vtkUnstructuredGrid* boundary = vtkUnstructuredGrid::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->NumberOfSheets = this->NumberOfInterpolatedSheets = this->NumberOfFailedSheets = 0;
+  this->NumberOfTriangles = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
+  this->MaximumDeviation = this->InterpolationSeconds = this->VerificationSeconds = 0.0;
+  this->MaximumVerifiedError = 0.0;
+  this->VerificationPassed = false;
+  if (!mat || !boundary)
+  {
+    vtkErrorMacro(<< "vtkSheetInterpolator needs the MAT (input 0, vtkPolyData) and the exact boundary "
+                     "(input 1, the source: vtkUnstructuredGrid)");
+    return 0;
+  }
+  try
+  {
+    this->Interpolate(mat, boundary, output);
+  }
+  catch (const InputError& e)
+  {
+    output->Initialize();
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  catch (const std::bad_alloc&)
+  {
+    output->Initialize();
+    vtkErrorMacro(<< "out of memory: the sheets ask for more than this machine can hold");
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* grid, vtkPolyData* output)
+{
+  checkParameter("Tolerance", this->Tolerance, 1e-9, 1e-1);
+  checkParameter("MaximumEdgeLength", this->MaximumEdgeLength, 1e-4, 1.0);
+  checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
+  if (!gridHasSurfaceCells(grid))
+    fail("the source holds no surface cells: vtkSheetInterpolator takes the faces of the solid the MAT was "
+         "computed from");
+  const Boundary3D boundary = buildNormalised(patchPiecesFromGrid(grid));
+  const Normalisation& frame = boundary.userFrame();
+  InputComplex in = readComplex(mat, frame);
+  MedialComplex& complex = in.complex;
+  const std::vector<Generator3D> generators = medialGenerators(boundary);
+
+  // The sheets' topology: generator pairs by label, seams by ElementId, convex edges by
+  // their faces' labels.
+  std::map<std::string, int> generatorByLabel;
+  for (int g = 0; g < static_cast<int>(generators.size()); ++g)
+    generatorByLabel[generatorLabel(boundary, generators[g].faces())] = g;
+  std::map<std::string, int> edgeByLabel;
+  for (int e = 0; e < static_cast<int>(boundary.edges().size()); ++e)
+  {
+    const Edge3D& edge = boundary.edges()[e];
+    edgeByLabel[faceLabel(boundary, edge.faceA) + "/" + faceLabel(boundary, edge.faceB)] = e;
+    edgeByLabel[faceLabel(boundary, edge.faceB) + "/" + faceLabel(boundary, edge.faceA)] = e;
+  }
+  vtkStringArray* sheetGovernors = fieldStrings(mat, arrays::SheetGovernors);
+  vtkStringArray* sheetSeams = fieldStrings(mat, arrays::SheetSeams);
+  vtkStringArray* sheetEdges = fieldStrings(mat, arrays::SheetConvexEdges);
+  const int tuples = static_cast<int>(sheetGovernors->GetNumberOfValues());
+  if (sheetSeams->GetNumberOfValues() != tuples || (sheetEdges && sheetEdges->GetNumberOfValues() != tuples))
+    fail("input 0: SheetGovernors, SheetSeams and SheetConvexEdges have different lengths");
+  std::vector<std::array<int, 2>> pairs;
+  for (int s = 0; s < tuples; ++s)
+  {
+    const std::vector<std::string> labels = words(sheetGovernors->GetValue(s), ',');
+    if (labels.size() != 2 || !generatorByLabel.count(labels[0]) || !generatorByLabel.count(labels[1]))
+      fail("sheet ", s, ": its generators \"", sheetGovernors->GetValue(s),
+        "\" are not entities of the source (is the source the boundary the MAT was computed from?)");
+    pairs.push_back({ { generatorByLabel[labels[0]], generatorByLabel[labels[1]] } });
+  }
+
+  auto t0 = std::chrono::steady_clock::now();
+  SheetOptions options;
+  options.tolerance = this->Tolerance;
+  options.maxEdge = this->MaximumEdgeLength;
+  const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
+  std::vector<int> status(tuples, 1);
+  std::vector<std::string> messages(tuples);
+  std::map<int, int> sheetOfElement; // ElementId → SheetId
+  std::vector<std::string> failures;
+  for (size_t k = 0; k < groups.size(); ++k)
+  {
+    const SheetGroup& group = groups[k];
+    std::vector<SheetBorderCurve> curves;
+    std::set<int> seams, edges;
+    for (int s : group.traced)
+    {
+      for (const std::string& w : words(sheetSeams->GetValue(s), ' '))
+      {
+        const int e = std::atoi(w.c_str());
+        if (e < 0 || e >= static_cast<int>(complex.elements.size()) || complex.elements[e].points.empty())
+          fail("sheet ", s, ": its seam ", w, " is not a polyline of input 0");
+        seams.insert(e);
+      }
+      if (sheetEdges)
+        for (const std::string& w : words(sheetEdges->GetValue(s), ' '))
+        {
+          if (!edgeByLabel.count(w))
+            fail("sheet ", s, ": its convex edge ", w, " is not an edge of the source");
+          edges.insert(edgeByLabel[w]);
+        }
+    }
+    for (int e : seams)
+    {
+      SheetBorderCurve curve;
+      for (int id : complex.elements[e].points)
+      {
+        curve.centres.push_back(complex.points[id].x);
+        curve.radii.push_back(complex.points[id].radius);
+        curve.ids.push_back(id);
+      }
+      curves.push_back(std::move(curve));
+    }
+    auto sideLabel = [&](const std::vector<int>& side) {
+      std::string out;
+      for (int g : side)
+        out += (out.empty() ? "" : "+") + generatorLabel(boundary, generators[g].faces());
+      return out;
+    };
+    const std::string label = sideLabel(group.a) + "," + sideLabel(group.b);
+    MedialSheetMesh mesh;
+    try
+    {
+      mesh = interpolateSheet(boundary, generators, group.a, group.b, curves,
+        std::vector<int>(edges.begin(), edges.end()), options);
+    }
+    catch (const InputError& e)
+    {
+      for (int s : group.traced)
+      {
+        status[s] = -1;
+        messages[s] = e.what();
+      }
+      failures.push_back(std::string("sheet ") + label + ": " + e.what());
+      vtkWarningMacro(<< "sheet " << label << " not interpolated: " << e.what());
+      continue;
+    }
+    if (mesh.triangles.empty())
+    {
+      for (int s : group.traced)
+        status[s] = 0;
+      continue;
+    }
+    ++this->NumberOfInterpolatedSheets;
+    this->MaximumDeviation = std::max(this->MaximumDeviation, mesh.maxDeviation);
+    // Vertices: the seams' own points where the sheet meets them, new points elsewhere.
+    std::vector<int> id(mesh.vertices.size());
+    for (size_t v = 0; v < mesh.vertices.size(); ++v)
+    {
+      const SheetVertex& sv = mesh.vertices[v];
+      if (sv.source >= 0)
+      {
+        id[v] = sv.source;
+        continue;
+      }
+      MedialPoint3D p;
+      p.x = sv.x;
+      p.radius = sv.r;
+      p.type = sv.convexEdge ? MedialPoint3DType::ConvexEdge : MedialPoint3DType::Sheet;
+      // Two touchpoints inside; on the border (solved on a chord of a seam, or where the
+      // pair's sheet goes on as another's) a third may touch too: not counted there.
+      p.contacts = sv.border ? 0 : 2;
+      if (!sv.convexEdge)
+        p.touches = { sv.touch[0], sv.touch[1] };
+      else
+        p.touches = { sv.x };
+      id[v] = static_cast<int>(complex.points.size());
+      complex.points.push_back(p);
+    }
+    MedialElement sheet;
+    sheet.type = MedialElementType::Sheet;
+    for (const auto& t : mesh.triangles)
+      sheet.triangles.push_back({ { id[t[0]], id[t[1]], id[t[2]] } });
+    this->NumberOfTriangles += static_cast<int>(sheet.triangles.size());
+    sheetOfElement[static_cast<int>(complex.elements.size())] = group.traced.front();
+    complex.elements.push_back(std::move(sheet));
+    in.governors.push_back(label);
+    this->UpdateProgress(0.8 * static_cast<double>(k + 1) / groups.size());
+  }
+  this->NumberOfSheets = static_cast<int>(groups.size());
+  this->NumberOfFailedSheets = static_cast<int>(failures.size());
+  // A convex edge's sample at a vertex is the seam's radius-0 point there.
+  complex.weld(1e-12 * boundary.diagonal());
+  this->InterpolationSeconds = secondsSince(t0);
+
+  const MedialComplex& written = complex;
+  writeMedialComplex(written, frame,
+    [&written, &in](const MedialElement& e) { return in.governors[&e - written.elements.data()]; }, false,
+    output);
+  vtkDataArray* elementIds = output->GetCellData()->GetArray(arrays::ElementId);
+  vtkNew<vtkIntArray> sheetId;
+  sheetId->SetName(arrays::SheetId);
+  sheetId->SetNumberOfTuples(output->GetNumberOfCells());
+  for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  {
+    const auto it = sheetOfElement.find(static_cast<int>(elementIds->GetTuple1(c)));
+    sheetId->SetValue(c, it == sheetOfElement.end() ? -1 : it->second);
+  }
+  output->GetCellData()->AddArray(sheetId);
+  output->GetFieldData()->PassData(mat->GetFieldData());
+  vtkNew<vtkIntArray> statusArray;
+  statusArray->SetName(arrays::SheetStatus);
+  vtkNew<vtkStringArray> messageArray;
+  messageArray->SetName(arrays::SheetMessage);
+  for (int s = 0; s < tuples; ++s)
+  {
+    statusArray->InsertNextValue(status[s]);
+    messageArray->InsertNextValue(messages[s]);
+  }
+  output->GetFieldData()->AddArray(statusArray);
+  output->GetFieldData()->AddArray(messageArray);
+
+  VerificationOutcome outcome;
+  if (this->VerifyOutput)
+  {
+    t0 = std::chrono::steady_clock::now();
+    int stride = 1;
+    if (this->MaximumSheetPointsVerified > 0)
+    {
+      const int sheetPoints = complex.countPoints(MedialPoint3DType::Sheet);
+      stride = std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) / this->MaximumSheetPointsVerified);
+    }
+    const PatchBoundary exact(boundary);
+    MedialVerification v;
+    withThreads(this->NumberOfThreads, [&]() {
+      v = verifyMedialComplex(exact, complex, stride, std::max(1e-15, 64.0 * frame.inputRounding()), smpParallelFor());
+    });
+    this->VerificationSeconds = secondsSince(t0);
+    this->NumberOfVerifiedPoints = v.points;
+    this->NumberOfTouchpointMismatches = v.contactMismatches;
+    outcome = outcomeOf(v, this->VerificationTolerance, complex, frame);
+  }
+  if (!failures.empty())
+  {
+    outcome.passed = false;
+    outcome.report += std::string(outcome.report.empty() ? "" : "; ") + std::to_string(failures.size()) +
+      " sheet(s) not interpolated (first: " + failures.front() + ")";
+  }
+  attachVerification(output, outcome);
+  this->VerificationPassed = outcome.passed;
+  this->MaximumVerifiedError = outcome.maximumError;
+  if (!outcome.passed)
+    vtkWarningMacro(<< "verification failed: " << outcome.report);
+}
+
+void vtkSheetInterpolator::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
+  os << indent << "VerifyOutput: " << this->VerifyOutput << "\n";
+  os << indent << "VerificationTolerance: " << this->VerificationTolerance << "\n";
+  os << indent << "MaximumSheetPointsVerified: " << this->MaximumSheetPointsVerified << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfSheets: " << this->NumberOfSheets << "\n";
+  os << indent << "NumberOfFailedSheets: " << this->NumberOfFailedSheets << "\n";
+}

@@ -1,0 +1,123 @@
+/**
+ * @class   vtkSheetInterpolator
+ * @brief   The medial sheets of a solid's 3D MAT as triangles with `Radius`: with
+ *          vtkMAT3DFilter's seams and junctions, the complete MAT (thesis §6.3.9).
+ *
+ * Input port 0: vtkMAT3DFilter's output (the seam graph and, as field data, each sheet's
+ * generator pair and bounding seams and convex edges). Input port 1 (the source, as
+ * vtkProbeFilter takes it: SetSourceConnection / SetSourceData): the exact boundary the
+ * MAT was computed from.
+ *
+ * Output: one vtkPolyData — the input's junctions, seams and skeletal edges unchanged, and
+ * every sheet as triangles sharing point ids with the seams on its border. Point data as
+ * vtkMAT3DFilter's (`Radius`, `PointType` 0 for sheet points and 5 for radius 0 on a convex
+ * edge, `Touchpoints` 2 inside a sheet, `Footpoint0`/`Footpoint1` the two touchpoints);
+ * cell data `ElementType` (7 for sheet triangles), `ElementId`, `Governors` (the sheet's
+ * pair, "0,4" or "3,12/13"), `SheetId` (the sheet's tuple in `SheetGovernors`, −1 for
+ * the seam graph's cells). Field data: the input's sheet topology, `SheetStatus` per sheet
+ * (1 interpolated, 0 empty: its balls meet in one point, −1 failed) and `SheetMessage` (why
+ * it failed).
+ *
+ * Every sheet vertex is the centre of a ball touching both generators of the pair:
+ * parameterised by the touchpoint on one of them (a face when the pair has one), the other
+ * touch and the radius solved by Newton; triangles by CGAL's constrained Delaunay
+ * triangulation of the parameter domain bounded by the seams' touchpoints, refined until
+ * each triangle's centroid is within Tolerance of the exact sheet (position and radius)
+ * and no edge is longer than MaximumEdgeLength. Coplanar faces across smooth edges (a
+ * polygon split into triangles) are one side of a sheet.
+ *
+ * VerifyOutput (default on) checks every output point — or at most
+ * MaximumSheetPointsVerified sheet points, evenly spread, when that is not 0 — against the
+ * exact boundary: global distance = Radius, two touchpoints inside a sheet. A sheet that
+ * cannot be interpolated is named in a warning and makes the verification fail: the
+ * output is never an incomplete MAT that says it is complete.
+ *
+ * @warning Not yet: sheets whose parameterisation degenerates — between two reflex edges
+ * closing on a rim at their common corner (the stepped block's inner corners) — and sheets
+ * across smooth edges between curved faces; both are reported as failed sheets.
+ */
+#ifndef vtkSheetInterpolator_h
+#define vtkSheetInterpolator_h
+
+#include "ExactMATFiltersMedialModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkUnstructuredGrid;
+
+class EXACTMATFILTERSMEDIAL_EXPORT vtkSheetInterpolator : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSheetInterpolator* New();
+  vtkTypeMacro(vtkSheetInterpolator, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The exact boundary (input port 1).
+  void SetSourceConnection(vtkAlgorithmOutput* algOutput);
+  void SetSourceData(vtkDataObject* source);
+
+  /// Largest deviation of a triangle from the exact sheet (position and radius, at its
+  /// centroid), a fraction of the solid's size.
+  vtkSetClampMacro(Tolerance, double, 1e-9, 1e-1);
+  vtkGetMacro(Tolerance, double);
+  /// Longest triangle edge, a fraction of the solid's size.
+  vtkSetClampMacro(MaximumEdgeLength, double, 1e-4, 1.0);
+  vtkGetMacro(MaximumEdgeLength, double);
+
+  vtkSetMacro(VerifyOutput, bool);
+  vtkGetMacro(VerifyOutput, bool);
+  vtkBooleanMacro(VerifyOutput, bool);
+  vtkSetMacro(VerificationTolerance, double);
+  vtkGetMacro(VerificationTolerance, double);
+  /// 0 (default): every point is verified; else at most this many sheet points.
+  vtkSetClampMacro(MaximumSheetPointsVerified, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumSheetPointsVerified, int);
+  /// Threads for the verification (vtkSMPTools, STDThread backend; 0 = every core).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+
+  vtkGetMacro(NumberOfSheets, int);
+  vtkGetMacro(NumberOfInterpolatedSheets, int);
+  vtkGetMacro(NumberOfFailedSheets, int);
+  vtkGetMacro(NumberOfTriangles, int);
+  vtkGetMacro(MaximumDeviation, double);
+  vtkGetMacro(InterpolationSeconds, double);
+  vtkGetMacro(VerificationSeconds, double);
+  vtkGetMacro(NumberOfVerifiedPoints, int);
+  vtkGetMacro(NumberOfTouchpointMismatches, int);
+  vtkGetMacro(VerificationPassed, bool);
+  vtkGetMacro(MaximumVerifiedError, double);
+
+protected:
+  vtkSheetInterpolator();
+  ~vtkSheetInterpolator() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkSheetInterpolator(const vtkSheetInterpolator&) = delete;
+  void operator=(const vtkSheetInterpolator&) = delete;
+
+  void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output);
+
+  double Tolerance = 1e-4;
+  double MaximumEdgeLength = 0.05;
+  bool VerifyOutput = true;
+  double VerificationTolerance = 1e-9;
+  int MaximumSheetPointsVerified = 0;
+  int NumberOfThreads = 0;
+
+  int NumberOfSheets = 0;
+  int NumberOfInterpolatedSheets = 0;
+  int NumberOfFailedSheets = 0;
+  int NumberOfTriangles = 0;
+  double MaximumDeviation = 0.0;
+  double InterpolationSeconds = 0.0;
+  double VerificationSeconds = 0.0;
+  int NumberOfVerifiedPoints = 0;
+  int NumberOfTouchpointMismatches = 0;
+  bool VerificationPassed = true;
+  double MaximumVerifiedError = 0.0;
+};
+
+#endif
