@@ -240,6 +240,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   std::vector<std::string> messages(tuples);
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
+  std::vector<MedialSheetMesh> meshes; // for the coverage check
   for (size_t k = 0; k < groups.size(); ++k)
   {
     const SheetGroup& group = groups[k];
@@ -337,6 +338,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     sheetOfElement[static_cast<int>(complex.elements.size())] = group.traced.front();
     complex.elements.push_back(std::move(sheet));
     in.governors.push_back(label);
+    meshes.push_back(std::move(mesh));
     this->UpdateProgress(0.8 * static_cast<double>(k + 1) / groups.size());
   }
   this->NumberOfSheets = static_cast<int>(groups.size());
@@ -391,6 +393,28 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     this->NumberOfVerifiedPoints = v.points;
     this->NumberOfTouchpointMismatches = v.contactMismatches;
     outcome = outcomeOf(v, this->VerificationTolerance, complex, frame);
+  }
+  // Completeness: the sheets' footprints cover every face (each boundary point has one
+  // maximal ball), whatever the points' own check says.
+  this->MaximumCoverageShortfall = 0.0;
+  std::string uncovered;
+  int uncoveredFaces = 0;
+  for (const FaceCoverage& c : sheetCoverage(boundary, meshes))
+  {
+    this->MaximumCoverageShortfall = std::max(this->MaximumCoverageShortfall, c.shortfall());
+    if (c.shortfall() > 10.0 * this->Tolerance + 1e-9 && ++uncoveredFaces == 1)
+    {
+      std::ostringstream line;
+      line << "face " << faceLabel(boundary, c.face) << ": its sheets touch " << 100.0 * c.covered / c.area
+           << " % of it";
+      uncovered = line.str();
+    }
+  }
+  if (uncoveredFaces > 0)
+  {
+    outcome.passed = false;
+    outcome.report += std::string(outcome.report.empty() ? "" : "; ") + std::to_string(uncoveredFaces) +
+      " face(s) not covered by the sheets' touchpoints, a sheet is incomplete (first: " + uncovered + ")";
   }
   if (!failures.empty())
   {

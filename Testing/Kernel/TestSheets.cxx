@@ -36,21 +36,6 @@ Sheets sheetsOf(const std::vector<PatchPiece>& pieces, const SheetOptions& optio
   return s;
 }
 
-// A face's area from a fine grid of its patch (exact for planar faces with straight sides,
-// whose grid cells are planar quadrilaterals).
-double faceArea(const BezierPatch& patch, int n = 200)
-{
-  double sum = 0.0;
-  auto at = [&](int i, int j) { return patch.evaluate(static_cast<double>(i) / n, static_cast<double>(j) / n); };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-    {
-      const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      sum += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
-    }
-  return sum;
-}
-
 // Every vertex against the exact boundary; the touchpoint footprints of the sheets on each
 // face add up to the face's area within `coverage` (relative).
 void expectExactSheets(const Sheets& s, const std::string& what, double coverage)
@@ -58,52 +43,24 @@ void expectExactSheets(const Sheets& s, const std::string& what, double coverage
   EXPECT_TRUE(s.failures.empty()) << what << ": " << (s.failures.empty() ? "" : s.failures.front().second);
   const PatchBoundary exact(*s.boundary);
   const double size = s.boundary->diagonal();
-  std::vector<double> covered(s.boundary->faces().size(), 0.0), area(covered.size(), 0.0);
-  std::vector<int> group(covered.size());
-  for (size_t f = 0; f < group.size(); ++f)
-    group[f] = static_cast<int>(f);
   int vertices = 0;
   for (const MedialSheetMesh& mesh : s.meshes)
   {
-    ASSERT_FALSE(mesh.triangles.empty()) << what;
     for (const SheetVertex& v : mesh.vertices)
     {
       ++vertices;
       EXPECT_NEAR(exact.distance(v.x), v.r, 1e-9 * size) << what << " at " << v.x.transpose();
       if (!v.border)
       {
-        EXPECT_EQ(exact.touchpoints(v.x, v.r * (1.0 + 2e-9) + 1e-15 * size).size(), 2u) << what << " at " << v.x.transpose();
+        EXPECT_EQ(exact.touchpoints(v.x, v.r * (1.0 + 2e-9) + 1e-15 * size).size(), 2u)
+          << what << " at " << v.x.transpose();
       }
     }
     EXPECT_LE(mesh.maxDeviation, 1e-4) << what;
-    // A side's footprint counts for all its faces (coplanar faces across smooth edges
-    // are one side): compared with their summed area below, on the side's first face.
-    for (int k = 0; k < 2; ++k)
-    {
-      const int g = mesh.generators[k];
-      if (g >= static_cast<int>(covered.size()))
-        continue; // a reflex edge or corner: no area
-      for (int f : mesh.members[k])
-        group[f] = g;
-      for (const auto& t : mesh.triangles)
-      {
-        const Vec3& a = mesh.vertices[t[0]].touch[k];
-        const Vec3& b = mesh.vertices[t[1]].touch[k];
-        const Vec3& c = mesh.vertices[t[2]].touch[k];
-        covered[g] += 0.5 * (b - a).cross(c - a).norm();
-      }
-    }
   }
   EXPECT_GT(vertices, 0) << what;
-  for (size_t f = 0; f < covered.size(); ++f)
-    area[group[f]] += faceArea(s.boundary->faces()[f].patch);
-  for (size_t f = 0; f < covered.size(); ++f)
-  {
-    if (area[f] > 0.0)
-    {
-      EXPECT_NEAR(covered[f], area[f], coverage * area[f]) << what << ": face " << f;
-    }
-  }
+  for (const FaceCoverage& c : sheetCoverage(*s.boundary, s.meshes))
+    EXPECT_LE(c.shortfall(), coverage) << what << ": face " << c.face << " covered " << c.covered << " of " << c.area;
 }
 
 } // namespace
@@ -159,4 +116,35 @@ TEST(Sheets, PillowSheetsAreCurvedAndExact)
 TEST(Sheets, BoxWithAFreeFormTop)
 {
   expectExactSheets(sheetsOf(boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5)), "free-form top", 1e-3);
+}
+
+TEST(Sheets, ReflexEdgesAndCornersHaveCurvedSheets)
+{
+  // Sheets between a face and a reflex edge (parabolic cylinders); the floor's sheet with
+  // the reflex edge reaches radius 0 at the edge's foot.
+  expectExactSheets(sheetsOf(lPrism(1.0, 2.5)), "L prism", 1e-3);
+}
+
+// Known gap, flagged rather than hidden: on the notched cube (a reflex corner), the stepped
+// block (rims) and random staircases some sheet borders are closed across a corner their
+// free ends should turn, or cannot be closed; the coverage check finds the missing area.
+// Every vertex that is output is still exact.
+TEST(Sheets, IncompleteSheetsAreFoundByTheCoverageCheck)
+{
+  std::mt19937 rng(11);
+  std::vector<std::pair<std::string, std::vector<PatchPiece>>> solids{ { "notched cube", notchedCube(2.0, 1.0) },
+    { "stepped block", patchPieces(makeShape("stepped-block").surfaces) },
+    { "staircase", randomStaircase(rng, 4, 2) } };
+  for (const auto& [what, pieces] : solids)
+  {
+    const Sheets s = sheetsOf(pieces);
+    const PatchBoundary exact(*s.boundary);
+    for (const MedialSheetMesh& mesh : s.meshes)
+      for (const SheetVertex& v : mesh.vertices)
+        EXPECT_NEAR(exact.distance(v.x), v.r, 1e-9 * s.boundary->diagonal()) << what;
+    double worst = 0.0;
+    for (const FaceCoverage& c : sheetCoverage(*s.boundary, s.meshes))
+      worst = std::max(worst, c.shortfall());
+    EXPECT_TRUE(!s.failures.empty() || worst > 1e-3) << what << ": complete now; move it to the exact tests";
+  }
 }

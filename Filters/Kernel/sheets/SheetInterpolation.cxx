@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <set>
 
@@ -107,6 +105,7 @@ public:
       Side[0].kind() != GeneratorKind3D::Face && Side[1].kind() == GeneratorKind3D::Face ? 1 : 0;
     P = Mesh.parameterisedBy;
     O = 1 - P;
+    Projected = Side[0].kind() != GeneratorKind3D::Face && Side[1].kind() != GeneratorKind3D::Face;
     Touch = 1e-8 * Size;
   }
 
@@ -133,11 +132,9 @@ public:
       pieces.end());
     if (pieces.empty())
       return std::move(Mesh);
-    if (std::getenv("EXACTMAT_SHEET_DEBUG"))
-      for (const auto& p : pieces)
-        std::fprintf(stderr, "%s piece %zu: %g %g %g (q %g %g) -> %g %g %g (q %g %g)\n", name().c_str(), p.size(),
-          p.front().x.x(), p.front().x.y(), p.front().x.z(), p.front().q[P].x(), p.front().q[P].y(),
-          p.back().x.x(), p.back().x.y(), p.back().x.z(), p.back().q[P].x(), p.back().q[P].y());
+    addReflexCorners(pieces);
+    if (Projected)
+      fitPlane(pieces);
     const std::vector<std::vector<SheetVertex>> loops = chain(pieces);
     triangulate(loops);
     return std::move(Mesh);
@@ -150,7 +147,31 @@ private:
   double Touch;
   std::array<SheetSide, 2> Side;
   int P = 0, O = 1; ///< which side carries the parameter domain, and the other
+  bool Projected = false; ///< the domain is a plane's (two reflex entities), not P's
+  Vec3 Origin = Vec3::Zero(), Axis0 = Vec3::Zero(), Axis1 = Vec3::Zero(), Normal = Vec3::Zero();
   MedialSheetMesh Mesh;
+
+  // A sheet with a reflex edge or corner reaches radius 0 at the vertices where that entity
+  // meets the other side (the L prism's sheet of its floor and its reflex edge ends at the
+  // edge's foot), a point no seam or convex edge brings: such vertices join as one-point
+  // pieces, so the border's free ends are joined through them, not across.
+  void addReflexCorners(std::vector<std::vector<SheetVertex>>& pieces) const
+  {
+    if ((Side[0].kind() == GeneratorKind3D::Face) == (Side[1].kind() == GeneratorKind3D::Face))
+      return; // two faces meet along convex edges; two reflex entities close on a rim
+    for (const Vertex3D& vertex : B.vertices())
+    {
+      SheetVertex v;
+      if (!onSheet(vertex.point, 0.0, v))
+        continue;
+      bool known = false;
+      for (const auto& piece : pieces)
+        for (const SheetVertex& w : piece)
+          known = known || (w.x - v.x).norm() <= 1e-8 * Size;
+      if (!known)
+        pieces.push_back({ v });
+    }
+  }
 
   // The parameter of g's touch of the ball (x, r), when the ball touches g there along
   // g's normal (a touch on g's border counts; radius 0: x on g).
@@ -177,6 +198,7 @@ private:
     v.r = r;
     v.q[P] = qp;
     v.q[O] = qo;
+    v.domain = Projected ? planeCoordinates(x) : qp;
     v.touch[P] = Side[P].evaluate(qp).point;
     v.touch[O] = r <= Touch ? x : Side[O].evaluate(qo).point;
     v.border = true;
@@ -236,6 +258,7 @@ private:
       v.x = side.evaluate(t);
       v.r = 0.0;
       v.q[P] = Side[P].parameterOf(v.x);
+      v.domain = v.q[P];
       v.q[O] = Side[O].parameterOf(v.x);
       v.touch = { { v.x, v.x } };
       v.border = true;
@@ -249,6 +272,8 @@ private:
   // bracketed distance root when Newton does not land on O.
   bool solve(const Vec2& qp, SheetVertex& v) const
   {
+    if (Projected)
+      return solveProjected(qp, v);
     const Touch3D tp = Side[P].evaluate(qp);
     Vec2 qo = v.q[O];
     double r = v.r;
@@ -263,8 +288,86 @@ private:
     v.r = std::max(r, 0.0);
     v.q[P] = qp;
     v.q[O] = qo;
+    v.domain = qp;
     v.touch[P] = tp.point;
     v.touch[O] = Side[O].evaluate(qo).point;
+    v.source = -1;
+    v.border = v.convexEdge = false;
+    return true;
+  }
+
+  // A sheet between two reflex entities (edges, corners) has no face to carry its domain
+  // (their touch parameters stay fixed along a rim): the domain is the plane fitted to its
+  // border balls' centres instead, and a point (u, v) there is the ball whose centre lies
+  // on the plane's normal through it: Newton on both touches, the height and the radius.
+  Vec2 planeCoordinates(const Vec3& x) const { return Vec2((x - Origin).dot(Axis0), (x - Origin).dot(Axis1)); }
+
+  void fitPlane(std::vector<std::vector<SheetVertex>>& pieces)
+  {
+    Vec3 sum = Vec3::Zero();
+    int n = 0;
+    for (const auto& piece : pieces)
+      for (const SheetVertex& v : piece)
+      {
+        sum += v.x;
+        ++n;
+      }
+    Origin = sum / std::max(n, 1);
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const auto& piece : pieces)
+      for (const SheetVertex& v : piece)
+        scatter += (v.x - Origin) * (v.x - Origin).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+    Normal = eigen.eigenvectors().col(0);
+    Axis0 = eigen.eigenvectors().col(2);
+    Axis1 = Normal.cross(Axis0);
+    for (auto& piece : pieces)
+      for (SheetVertex& v : piece)
+        v.domain = planeCoordinates(v.x);
+  }
+
+  bool solveProjected(const Vec2& uv, SheetVertex& v) const
+  {
+    const Vec3 base = Origin + uv.x() * Axis0 + uv.y() * Axis1;
+    Vec2 qa = v.q[0], qb = v.q[1];
+    double w = (v.x - base).dot(Normal), r = v.r;
+    bool converged = false;
+    for (int it = 0; it < 40 && !converged; ++it)
+    {
+      const Touch3D ta = Side[0].evaluate(qa), tb = Side[1].evaluate(qb);
+      const Vec3 x = base + w * Normal;
+      Eigen::Matrix<double, 6, 1> f;
+      f << ta.point + r * ta.normal - x, tb.point + r * tb.normal - x;
+      Eigen::Matrix<double, 6, 6> j = Eigen::Matrix<double, 6, 6>::Zero();
+      j.block<3, 2>(0, 0) = ta.dPoint + r * ta.dNormal;
+      j.block<3, 2>(3, 2) = tb.dPoint + r * tb.dNormal;
+      j.block<3, 1>(0, 4) = -Normal;
+      j.block<3, 1>(3, 4) = -Normal;
+      j.block<3, 1>(0, 5) = ta.normal;
+      j.block<3, 1>(3, 5) = tb.normal;
+      const Eigen::Matrix<double, 6, 1> d = j.colPivHouseholderQr().solve(-f);
+      if (!d.allFinite())
+        return false;
+      qa += d.segment<2>(0);
+      qb += d.segment<2>(2);
+      w += d(4);
+      r += d(5);
+      if (!std::isfinite(r) || std::abs(r) > 4.0 * Size || std::abs(w) > 4.0 * Size)
+        return false;
+      converged = d.norm() <= 1e-15 * (1.0 + qa.norm() + qb.norm() + std::abs(w) + std::abs(r)) ||
+        f.norm() <= 1e-15 * Size;
+    }
+    const Touch3D ta = Side[0].evaluate(qa), tb = Side[1].evaluate(qb);
+    const Vec3 x = base + w * Normal;
+    if ((ta.point + r * ta.normal - x).norm() > 1e-12 * Size || (tb.point + r * tb.normal - x).norm() > 1e-12 * Size)
+      return false;
+    if (r < -Touch || Side[0].exitSide(qa, Touch) >= 0 || Side[1].exitSide(qb, Touch) >= 0)
+      return false;
+    v.x = x;
+    v.r = std::max(r, 0.0);
+    v.q = { { qa, qb } };
+    v.domain = uv;
+    v.touch = { { ta.point, tb.point } };
     v.source = -1;
     v.border = v.convexEdge = false;
     return true;
@@ -331,8 +434,8 @@ private:
     const size_t guardMax = 4 * pieces.size() + 8;
     for (size_t start = 0; start < pieces.size(); ++start)
     {
-      if (used[start])
-        continue;
+      if (used[start] || pieces[start].size() < 2)
+        continue; // a corner's one-point piece joins a loop, it does not start one
       used[start] = true;
       std::vector<SheetVertex> loop = pieces[start];
       bool closed = false;
@@ -396,14 +499,14 @@ private:
           // lies on a side the end lies on and its own piece does not run along; the
           // nearest of all when no end shares one.
           const std::vector<std::pair<int, int>> endSides = freeSides(loop);
-          const Vec2 qe = end.q[P];
+          const Vec2 qe = end.domain;
           double best = std::numeric_limits<double>::infinity();
           bool bestShares = false;
           auto consider = [&](const SheetVertex& v, const std::vector<std::pair<int, int>>& sides, int j, bool rev) {
             bool shares = false;
             for (const auto& side : sides)
               shares = shares || std::find(endSides.begin(), endSides.end(), side) != endSides.end();
-            const double d = (v.q[P] - qe).norm();
+            const double d = (v.domain - qe).norm();
             if ((shares && !bestShares) || (shares == bestShares && d < best))
             {
               best = d;
@@ -442,9 +545,9 @@ private:
       // Repeated parameters (a ball met twice along the border) would be one domain vertex.
       std::vector<SheetVertex> clean;
       for (const SheetVertex& v : densified(loop))
-        if (clean.empty() || (v.q[P] - clean.back().q[P]).norm() > 1e-14)
+        if (clean.empty() || (v.domain - clean.back().domain).norm() > 1e-14)
           clean.push_back(v);
-      while (clean.size() > 1 && (clean.back().q[P] - clean.front().q[P]).norm() <= 1e-14)
+      while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= 1e-14)
         clean.pop_back();
       if (clean.size() < 3)
         continue; // a stretch that folds back on itself bounds no area
@@ -506,7 +609,7 @@ private:
     SheetVertex m = a;
     m.r = 0.5 * (a.r + b.r);
     m.q[O] = 0.5 * (a.q[O] + b.q[O]);
-    if (!solve(0.5 * (a.q[P] + b.q[P]), m))
+    if (!solve(0.5 * (a.domain + b.domain), m))
       return;
     const double deviation = std::max((m.x - 0.5 * (a.x + b.x)).norm(), std::abs(m.r - 0.5 * (a.r + b.r)));
     if ((b.x - a.x).norm() <= Options.maxEdge * Size && deviation <= Options.tolerance * Size)
@@ -531,7 +634,7 @@ private:
       SheetVertex v = from;
       v.r = (1.0 - s) * from.r + s * target.r;
       v.q[O] = (1.0 - s) * from.q[O] + s * target.q[O];
-      if (!solve((1.0 - s) * from.q[P] + s * target.q[P], v))
+      if (!solve((1.0 - s) * from.domain + s * target.domain, v))
         fail("3D MAT sheets: the border of ", name(), " has an open end that cannot be closed along ",
           Side[P].name());
       v.border = true;
@@ -548,7 +651,7 @@ private:
       domain.emplace_back();
       for (const SheetVertex& v : loop)
       {
-        domain.back().push_back(v.q[P]);
+        domain.back().push_back(v.domain);
         Mesh.vertices.push_back(v);
       }
     }
@@ -580,7 +683,7 @@ private:
         SheetVertex centroid = a;
         centroid.r = (a.r + b.r + c.r) / 3.0;
         centroid.q[O] = (a.q[O] + b.q[O] + c.q[O]) / 3.0;
-        const Vec2 q = (a.q[P] + b.q[P] + c.q[P]) / 3.0;
+        const Vec2 q = (a.domain + b.domain + c.domain) / 3.0;
         if (!solve(q, centroid))
         {
           // The centroid's ball misses O's entity: the domain's border chord cuts outside
@@ -626,7 +729,7 @@ private:
       SheetVertex centroid = a;
       centroid.r = (a.r + b.r + c.r) / 3.0;
       centroid.q[O] = (a.q[O] + b.q[O] + c.q[O]) / 3.0;
-      if (solve((a.q[P] + b.q[P] + c.q[P]) / 3.0, centroid))
+      if (solve((a.domain + b.domain + c.domain) / 3.0, centroid))
         worst = std::max(worst, std::max((centroid.x - (a.x + b.x + c.x) / 3.0).norm(),
                                   std::abs(centroid.r - (a.r + b.r + c.r) / 3.0)));
     }
@@ -743,6 +846,52 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     }
     out.back().traced = group.traced;
   }
+  return out;
+}
+
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes)
+{
+  const int faces = static_cast<int>(boundary.faces().size());
+  std::vector<int> group(faces);
+  for (int f = 0; f < faces; ++f)
+    group[f] = f;
+  std::vector<double> covered(faces, 0.0);
+  for (const MedialSheetMesh& mesh : meshes)
+    for (int k = 0; k < 2; ++k)
+    {
+      if (mesh.members[k].empty() || mesh.members[k].front() >= faces)
+        continue; // a reflex edge or corner: no area
+      for (int f : mesh.members[k])
+        group[f] = mesh.members[k].front();
+      for (const auto& t : mesh.triangles)
+      {
+        const Vec3& a = mesh.vertices[t[0]].touch[k];
+        covered[mesh.members[k].front()] +=
+          0.5 * (mesh.vertices[t[1]].touch[k] - a).cross(mesh.vertices[t[2]].touch[k] - a).norm();
+      }
+    }
+  std::vector<double> area(faces, 0.0);
+  for (int f = 0; f < faces; ++f)
+  {
+    // A fine grid of the patch: exact for planar faces with straight sides (their cells
+    // are planar quadrilaterals), within about 1e-5 for curved ones.
+    const BezierPatch& patch = boundary.faces()[f].patch;
+    const Vec3 c00 = patch.evaluate(0, 0), c10 = patch.evaluate(1, 0), c01 = patch.evaluate(0, 1);
+    const bool flat = patch.degreeU() <= 1 && patch.degreeV() <= 1 &&
+      std::abs((c10 - c00).cross(c01 - c00).normalized().dot(patch.evaluate(1, 1) - c00)) <= 1e-14 * boundary.diagonal();
+    const int n = flat ? 1 : 64;
+    auto at = [&](int i, int j) { return patch.evaluate(static_cast<double>(i) / n, static_cast<double>(j) / n); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+      {
+        const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+        area[group[f]] += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
+      }
+  }
+  std::vector<FaceCoverage> out;
+  for (int f = 0; f < faces; ++f)
+    if (group[f] == f)
+      out.push_back({ f, area[f], covered[f] });
   return out;
 }
 

@@ -50,6 +50,10 @@ struct SheetVertex
   /// Touchpoint parameters and touchpoints on the pair's generators, in the order given.
   std::array<Vec2, 2> q{ { Vec2::Zero(), Vec2::Zero() } };
   std::array<Vec3, 2> touch{ { Vec3::Zero(), Vec3::Zero() } };
+  /// Where the vertex lies in the sheet's parameter domain: its touch parameters on the
+  /// side that carries it, or its coordinates in the plane fitted to the border when both
+  /// sides are reflex edges or corners.
+  Vec2 domain = Vec2::Zero();
   int source = -1;       ///< the border curve point it is (SheetBorderCurve::ids), or −1
   bool border = false;   ///< on the sheet's border (from a curve, a convex edge or a gap)
   bool convexEdge = false; ///< radius 0 on a convex edge of the solid
@@ -97,5 +101,17 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
 /// put in `failures` (its index in the result and the InputError's message).
 std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
   const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures);
+
+/// Completeness, independent of how the sheets were found: every point of a face has one
+/// maximal ball, so the sheets' touchpoint footprints on a face (or on coplanar faces that
+/// are one side) add up to its area. One entry per face or group of coplanar faces.
+struct FaceCoverage
+{
+  int face = -1;        ///< the face (the group's first)
+  double area = 0.0;    ///< the face's (group's) area
+  double covered = 0.0; ///< the footprints' total
+  double shortfall() const { return area > 0.0 ? std::abs(covered - area) / area : 0.0; }
+};
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes);
 
 } // namespace exactmat
