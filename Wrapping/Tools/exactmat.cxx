@@ -18,6 +18,7 @@
 #include "vtkMAT25DFilter.h"
 #include "vtkMAT2DFilter.h"
 #include "vtkMAT3DFilter.h"
+#include "vtkSheetInterpolator.h"
 #include "vtkMATBoundaryConversion.h"
 #include "vtkNURBSReader.h"
 #include "vtkNURBSSource.h"
@@ -74,7 +75,8 @@ const char* Usage = R"(usage:
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
-              [--max-step H] [--png OUT.png] [--shape NAME] [--verify-tolerance V]
+              [--max-step H] [--sheets [--sheet-resolution R]] [--png OUT.png]
+              [--shape NAME] [--verify-tolerance V]
   exactmat batch FILE|FOLDER... [-o DIR] [-j N] [--mode auto|2d|3d|extrude|revolve]
                  [the options of that mode]
   exactmat shapes          list the bundled shapes
@@ -115,6 +117,10 @@ const char* Usage = R"(usage:
   --max-step H   longest step along a seam, fraction of the size (default 0.05)
   --step S       fixed steps of S x solid size along the seams, as in the thesis (junction
                  check every B, default 10 S)
+  --sheets       the medial sheets too, as triangles (vtkSheetInterpolator): within T
+                 (--tolerance) of the exact sheets, edges at most R x size (--sheet-resolution,
+                 default 0.05); every vertex verified, and the sheets' touchpoints must cover
+                 every face (exit 3 when a sheet is missing or incomplete)
   OUT.vtp defaults to exactmat-3d.vtp
 
   batch: every part file given, and every .vtu/.json/.step/.stp/.iges/.igs file of every
@@ -136,6 +142,8 @@ struct Arguments
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
   bool shapeGiven = false, outputGiven = false;
+  bool sheets = false;              ///< 3d: the medial sheets too (vtkSheetInterpolator)
+  bool sheetResolutionGiven = false;
   int part = 0; ///< solid or face of a STEP/IGES input
   std::string partName; ///< or its name in the file
   std::vector<double> axis; ///< empty, or point (3) and optionally direction (3)
@@ -250,7 +258,12 @@ Arguments parse(int argc, char* argv[])
     else if (arg == "--verify-tolerance")
       a.verifyTolerance = number(arg, value());
     else if (arg == "--sheet-resolution")
+    {
       a.sheetResolution = number(arg, value());
+      a.sheetResolutionGiven = true;
+    }
+    else if (arg == "--sheets")
+      a.sheets = true;
     else if (arg == "-j" || arg == "--threads")
     {
       const char* text = value();
@@ -755,8 +768,29 @@ int run3D(const Arguments& a)
   if (errors->Failed)
     return ExitInputError;
   vtkPolyData* out = mat->GetOutput();
+  vtkNew<vtkSheetInterpolator> sheets;
+  if (a.sheets)
+  {
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceData(solid);
+    sheets->SetTolerance(a.tolerance);
+    if (a.sheetResolutionGiven)
+      sheets->SetMaximumEdgeLength(a.sheetResolution);
+    sheets->SetVerificationTolerance(mat->GetVerificationTolerance());
+    sheets->SetNumberOfThreads(a.threads);
+    sheets->AddObserver(vtkCommand::ErrorEvent, errors);
+    sheets->AddObserver(vtkCommand::WarningEvent, warnings);
+    vtkNew<ProgressLine> sheetProgress;
+    sheetProgress->What = "filling sheets";
+    sheets->AddObserver(vtkCommand::ProgressEvent, sheetProgress);
+    sheets->Update();
+    if (errors->Failed)
+      return ExitInputError;
+    out = sheets->GetOutput();
+  }
   if (!writePolyData(out, a.output, errors))
     return ExitOutputError;
+  const bool passed = mat->GetVerificationPassed() && (!a.sheets || sheets->GetVerificationPassed());
   const exactmat::Boundary3D b = exactmat::buildNormalised(exactmat::patchPiecesFromGrid(solid));
   std::printf("ExactMAT 3D medial axis transform (seams and junctions) of %s\n", label.c_str());
   std::printf("  boundary            %zu faces, %d convex / %d reflex / %d smooth edges, %d convex / %d reflex "
@@ -767,22 +801,37 @@ int run3D(const Arguments& a)
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
   std::printf("  skeletal edges      %d (rims at corners of reflex edges)\n", mat->GetNumberOfSkeletalEdges());
-  std::printf("  sheets              %d (face pairs and their bounding seams; surfaces not yet)\n",
-    mat->GetNumberOfSheets());
+  if (!a.sheets)
+    std::printf("  sheets              %d (generator pairs and their bounding seams; --sheets fills them)\n",
+      mat->GetNumberOfSheets());
+  else
+    std::printf("  sheets              %d filled (%d failed), %d triangles, within %.3g of the exact sheets\n",
+      sheets->GetNumberOfInterpolatedSheets(), sheets->GetNumberOfFailedSheets(), sheets->GetNumberOfTriangles(),
+      sheets->GetMaximumDeviation());
   std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
   std::printf("  time                %.2f ms tracing, %.2f ms verification\n", 1e3 * mat->GetTracingSeconds(),
     1e3 * mat->GetVerificationSeconds());
   std::printf("  verified            %d points: largest |distance to boundary - radius| / size %.3g, "
               "touchpoint mismatches %d\n",
     mat->GetNumberOfVerifiedPoints(), mat->GetMaximumVerifiedError(), mat->GetNumberOfTouchpointMismatches());
-  std::printf("  verification        %s\n", mat->GetVerificationPassed() ? "passed" : "FAILED");
+  if (a.sheets)
+  {
+    std::printf("  sheets time         %.2f ms filling, %.2f ms verification\n",
+      1e3 * sheets->GetInterpolationSeconds(), 1e3 * sheets->GetVerificationSeconds());
+    std::printf("  sheets verified     %d points: largest |distance to boundary - radius| / size %.3g, "
+                "touchpoint mismatches %d; faces covered by the sheets' touchpoints to %.3g\n",
+      sheets->GetNumberOfVerifiedPoints(), sheets->GetMaximumVerifiedError(),
+      sheets->GetNumberOfTouchpointMismatches(), sheets->GetMaximumCoverageShortfall());
+  }
+  std::printf("  verification        %s\n", passed ? "passed" : "FAILED");
   std::printf("  wrote               %s\n", a.output.c_str());
   if (!a.png.empty())
   {
     std::string error;
     auto count = [](int n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); };
     const std::string title = "MAT of " + label + ": " + count(mat->GetNumberOfJunctions(), "junction") + ", " +
-      count(mat->GetNumberOfSeams(), "seam") + " (sheets: not yet)";
+      count(mat->GetNumberOfSeams(), "seam") +
+      (a.sheets ? ", " + count(sheets->GetNumberOfInterpolatedSheets(), "sheet") : std::string(" (sheets: --sheets)"));
     if (!writeSolidMATPicture(solid, out, a.png, title, error))
     {
       std::cerr << "exactmat: error: " << error << "\n";
@@ -790,7 +839,7 @@ int run3D(const Arguments& a)
     }
     std::printf("  wrote               %s\n", a.png.c_str());
   }
-  return mat->GetVerificationPassed() ? 0 : ExitVerification;
+  return passed ? 0 : ExitVerification;
 }
 int runBatch(const Arguments& a)
 {
