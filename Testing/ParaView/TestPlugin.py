@@ -75,6 +75,15 @@ mat3.UpdatePipeline()
 seams = servermanager.Fetch(mat3)
 assert seams.GetNumberOfVerts() == 1 and seams.GetNumberOfLines() == 8, (seams.GetNumberOfVerts(), seams.GetNumberOfLines())
 
+# Its sheets: the complete MAT, twelve curved sheets sharing the seams' points, verified.
+sheets = SheetInterpolator(Input=mat3, Source=source)  # noqa: F821
+sheets.Tolerance = 1e-3
+sheets.MaximumSheetPointsVerified = 300
+sheets.UpdatePipeline()
+full = servermanager.Fetch(sheets)
+assert full.GetNumberOfLines() == 8 and full.GetNumberOfPolys() > 100, (full.GetNumberOfLines(), full.GetNumberOfPolys())
+assert full.GetFieldData().GetArray("VerificationStatus").GetValue(0) == 1
+
 # ParaView opens an IGES part with the plugin's reader: exact planar faces, the 3D MAT.
 part = OpenDataFile(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data", "cad", "l-prism.igs"))
 assert part is not None and part.GetXMLName() == "CADBoundaryReader", part

@@ -362,6 +362,34 @@ class PythonPackage(unittest.TestCase):
     def test_mat3d_defaults_equal_the_paraview_xml(self):
         self.check_xml_defaults("MAT3DFilter.xml", "MAT3DFilter", vtkMAT3DFilter(), 8)
 
+    def test_sheets_of_the_box_through_numpy(self):
+        # The catalogue box 4 x 2 x 3: the complete MAT, 13 planar sheets; every sheet
+        # vertex at radius 1 lies in the middle sheet y = 0, |x| <= 1, |z| <= 0.5.
+        source = vtkNURBSSource()
+        source.SetShapeName("box")
+        mat = vtkMAT3DFilter()
+        mat.SetInputConnection(source.GetOutputPort())
+        sheets = exactmat.vtkSheetInterpolator()
+        sheets.SetInputConnection(mat.GetOutputPort())
+        sheets.SetSourceConnection(source.GetOutputPort())
+        sheets.SetNumberOfThreads(2)
+        sheets.Update()
+        self.assertEqual(sheets.GetNumberOfInterpolatedSheets(), 13)
+        self.assertTrue(sheets.GetVerificationPassed())
+        self.assertLessEqual(sheets.GetMaximumCoverageShortfall(), 1e-9)
+        out = sheets.GetOutput()
+        points = vtk_to_numpy(out.GetPoints().GetData())
+        radius = vtk_to_numpy(out.GetPointData().GetArray("Radius"))
+        middle = points[np.abs(radius - 1.0) < 1e-12]
+        self.assertGreater(len(middle), 4)
+        np.testing.assert_allclose(middle[:, 1], 0.0, atol=1e-12)
+        self.assertLessEqual(np.abs(middle[:, 0]).max(), 1.0 + 1e-12)
+        self.assertLessEqual(np.abs(middle[:, 2]).max(), 0.5 + 1e-12)
+        self.assertEqual(vtk_to_numpy(out.GetFieldData().GetArray("SheetStatus")).tolist(), [1] * 13)
+
+    def test_sheets_defaults_equal_the_paraview_xml(self):
+        self.check_xml_defaults("SheetInterpolator.xml", "SheetInterpolator", exactmat.vtkSheetInterpolator(), 6)
+
     def test_step_solid_through_the_3d_filter(self):
         # The L prism written by OpenCASCADE as IGES: exact planar faces, the 3D MAT verified.
         reader = vtkCADBoundaryReader()

@@ -186,6 +186,45 @@ class ExactmatCLI(unittest.TestCase):
             self.assertEqual(r.returncode, 1)
             self.assertIn("no surface cells", r.stderr)
 
+    def test_3d_sheets(self):
+        # The catalogue box 4 x 2 x 3 with --sheets: 13 planar sheets sharing the seams'
+        # points, every point verified, the faces covered; the middle sheet (between the
+        # faces 2 apart) is the rectangle |x| <= 1, |z| <= 0.5 at radius 1.
+        with tempfile.TemporaryDirectory() as tmp:
+            r = run("3d", "--shape", "box", "--sheets", "-o", "box.vtp", "--png", "box.png", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertIn("13 filled (0 failed)", r.stdout)
+            self.assertIn("verification        passed", r.stdout)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(tmp, "box.vtp"))
+            reader.Update()
+            out = reader.GetOutput()
+            self.assertEqual(out.GetNumberOfLines(), 12)
+            self.assertGreater(out.GetNumberOfPolys(), 13)
+            kinds = out.GetCellData().GetArray("ElementType")
+            sheet_ids = out.GetCellData().GetArray("SheetId")
+            radius = out.GetPointData().GetArray("Radius")
+            middle = 0
+            for c in range(out.GetNumberOfCells()):
+                if kinds.GetValue(c) != 7:
+                    self.assertEqual(sheet_ids.GetValue(c), -1)
+                    continue
+                ids = out.GetCell(c).GetPointIds()
+                if all(abs(radius.GetValue(ids.GetId(k)) - 1.0) < 1e-12 for k in range(3)):
+                    middle += 1
+                    for k in range(3):
+                        x = out.GetPoint(ids.GetId(k))
+                        self.assertLessEqual(abs(x[0]), 1.0 + 1e-12)
+                        self.assertLessEqual(abs(x[2]), 0.5 + 1e-12)
+                        self.assertAlmostEqual(x[1], 0.0, places=12)
+            self.assertGreater(middle, 0)
+            self.assertTrue(os.path.exists(os.path.join(tmp, "box.png")))
+            # Sheets the filter cannot complete yet (the notched cube's reflex corner) are
+            # a verification failure, exit 3, never a silent success.
+            r = run("3d", "--shape", "notched-cube", "--sheets", "-o", "notch.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
+            self.assertIn("not covered by the sheets", r.stderr)
+
     def test_input_alone_picks_2d_or_3d(self):
         # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT. The solid: the box
         # 4 x 3 x 2 as six planar VTK_QUAD faces (plain VTK, no ExactMAT module needed).
