@@ -257,12 +257,11 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       }
       if (sheetEdges)
         for (const std::string& w : words(sheetEdges->GetValue(s), ' '))
-        {
           if (!edgeByLabel.count(w))
             fail("sheet ", s, ": its convex edge ", w, " is not an edge of the source");
-          edges.insert(edgeByLabel[w]);
-        }
     }
+    for (int e : convexEdgesBetween(boundary, generators, group))
+      edges.insert(e);
     for (int e : seams)
     {
       SheetBorderCurve curve;

@@ -123,11 +123,15 @@ TEST(Sheets, ReflexEdgesAndCornersHaveCurvedSheets)
   // Sheets between a face and a reflex edge (parabolic cylinders); the floor's sheet with
   // the reflex edge reaches radius 0 at the edge's foot.
   expectExactSheets(sheetsOf(lPrism(1.0, 2.5)), "L prism", 1e-3);
+  // The catalogue's notched cube (one eighth cut away): sheets with the reflex corner too,
+  // whose borders turn where the corner's normal cone meets a face's side.
+  expectExactSheets(sheetsOf(patchPieces(makeShape("notched-cube").surfaces)), "notched cube", 1e-3);
 }
 
-// Known gap, flagged rather than hidden: on the notched cube (a reflex corner), the stepped
-// block (rims) and random staircases some sheet borders are closed across a corner their
-// free ends should turn, or cannot be closed; the coverage check finds the missing area.
+// Known gap, flagged rather than hidden: on a notched cube whose notch is smaller than half
+// its edge, the stepped block (rims) and random staircases some sheet borders are closed
+// across a corner their free ends should turn (where a reflex corner's normal cone meets a
+// face), or cannot be closed; the coverage check finds the missing area.
 // Every vertex that is output is still exact.
 TEST(Sheets, IncompleteSheetsAreFoundByTheCoverageCheck)
 {

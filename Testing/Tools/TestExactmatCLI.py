@@ -219,9 +219,9 @@ class ExactmatCLI(unittest.TestCase):
                         self.assertAlmostEqual(x[1], 0.0, places=12)
             self.assertGreater(middle, 0)
             self.assertTrue(os.path.exists(os.path.join(tmp, "box.png")))
-            # Sheets the filter cannot complete yet (the notched cube's reflex corner) are
-            # a verification failure, exit 3, never a silent success.
-            r = run("3d", "--shape", "notched-cube", "--sheets", "-o", "notch.vtp", cwd=tmp)
+            # Sheets the filter cannot complete yet (the stepped block's rims) are a
+            # verification failure, exit 3, never a silent success.
+            r = run("3d", "--shape", "stepped-block", "--sheets", "-o", "steps.vtp", cwd=tmp)
             self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
             self.assertIn("not covered by the sheets", r.stderr)
 

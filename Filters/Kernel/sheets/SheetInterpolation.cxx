@@ -502,6 +502,7 @@ private:
           const Vec2 qe = end.domain;
           double best = std::numeric_limits<double>::infinity();
           bool bestShares = false;
+          std::vector<std::pair<int, int>> bestSides;
           auto consider = [&](const SheetVertex& v, const std::vector<std::pair<int, int>>& sides, int j, bool rev) {
             bool shares = false;
             for (const auto& side : sides)
@@ -511,6 +512,7 @@ private:
             {
               best = d;
               bestShares = shares;
+              bestSides = sides;
               next = j;
               reversed = rev;
             }
@@ -525,7 +527,15 @@ private:
             consider(pieces[j].front(), freeSides(backwards), static_cast<int>(j), false);
             consider(pieces[j].back(), freeSides(pieces[j]), static_cast<int>(j), true);
           }
-          const SheetVertex& target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
+          const SheetVertex target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
+          // Ends on different sides: the border turns where those sides meet.
+          SheetVertex corner;
+          if (!bestShares && cornerBetween(loop.back(), endSides, target, bestSides, corner))
+          {
+            appendGap(loop, corner);
+            loop.push_back(corner);
+            ++Mesh.gapVertices;
+          }
           appendGap(loop, target);
           if (next < 0)
           {
@@ -584,6 +594,86 @@ private:
         }
       }
     return out;
+  }
+
+  // Where the line of side `a` (through end `from`) meets the line of side `b` (through
+  // `to`) in P's parameters, as a sheet point: the nearest such corner on a path from one
+  // end to the other. A side of P is a line of its parameters; a side of O is the line its
+  // preimage is when both sides are planar (the map from P's touch to O's is affine).
+  bool cornerBetween(const SheetVertex& from, const std::vector<std::pair<int, int>>& a, const SheetVertex& to,
+    const std::vector<std::pair<int, int>>& b, SheetVertex& corner) const
+  {
+    if (Projected)
+      return false;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& sa : a)
+      for (const auto& sb : b)
+      {
+        Vec2 a0, a1, b0, b1;
+        if (!sideLine(sa, from, a0, a1) || !sideLine(sb, to, b0, b1))
+          continue;
+        const Vec2 da = a1 - a0, db = b1 - b0;
+        const double den = da.x() * db.y() - da.y() * db.x();
+        if (std::abs(den) <= 1e-12 * da.norm() * db.norm())
+          continue;
+        const Vec2 w = b0 - a0;
+        const Vec2 c = a0 + (w.x() * db.y() - w.y() * db.x()) / den * da;
+        const double length = (c - from.domain).norm() + (to.domain - c).norm();
+        SheetVertex v = from;
+        v.r = 0.5 * (from.r + to.r);
+        v.q[O] = 0.5 * (from.q[O] + to.q[O]);
+        if (length < best && solve(c, v))
+        {
+          best = length;
+          corner = v;
+          corner.border = true;
+        }
+      }
+    return std::isfinite(best);
+  }
+
+  // Two points of the line a face side (face, patch side) is in P's parameters.
+  bool sideLine(const std::pair<int, int>& side, const SheetVertex& near, Vec2& p0, Vec2& p1) const
+  {
+    const BezierCurve curve = B.faces()[side.first].patch.side(side.second);
+    auto onSide = [&side](const SheetSide& s) {
+      for (const Generator3D* m : s.members())
+        if (m->kind() == GeneratorKind3D::Face && m->entity() == side.first)
+          return true;
+      return false;
+    };
+    if (onSide(Side[P]))
+    {
+      p0 = Side[P].parameterOf(curve.startPoint());
+      p1 = Side[P].parameterOf(curve.endPoint());
+      return true;
+    }
+    return onSide(Side[O]) && preimage(curve.startPoint(), near, p0) && preimage(curve.endPoint(), near, p1);
+  }
+
+  // P's parameters of the ball that touches O at its point e (along O's normal there).
+  bool preimage(const Vec3& e, const SheetVertex& near, Vec2& qp) const
+  {
+    const Touch3D to = Side[O].evaluate(Side[O].parameterOf(e));
+    qp = near.q[P];
+    double r = near.r;
+    for (int it = 0; it < 40; ++it)
+    {
+      const Touch3D tp = Side[P].evaluate(qp);
+      const Vec3 f = tp.point + r * tp.normal - to.point - r * to.normal;
+      if (f.norm() <= 1e-13 * Size)
+        return true;
+      Eigen::Matrix3d j;
+      j.col(0) = tp.dPoint.col(0) + r * tp.dNormal.col(0);
+      j.col(1) = tp.dPoint.col(1) + r * tp.dNormal.col(1);
+      j.col(2) = tp.normal - to.normal;
+      const Vec3 d = j.colPivHouseholderQr().solve(-f);
+      if (!d.allFinite())
+        return false;
+      qp += d.head<2>();
+      r += d(2);
+    }
+    return false;
   }
 
   // The loop with border edges no longer than maxEdge and within the tolerance of the
@@ -767,6 +857,28 @@ std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generat
   return members;
 }
 
+std::vector<int> convexEdgesBetween(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const SheetGroup& group)
+{
+  auto faces = [&generators](const std::vector<int>& side) {
+    std::set<int> out;
+    for (int g : side)
+      if (generators[g].kind() == GeneratorKind3D::Face)
+        out.insert(generators[g].entity());
+    return out;
+  };
+  const std::set<int> a = faces(group.a), b = faces(group.b);
+  std::vector<int> out;
+  for (int e = 0; e < static_cast<int>(boundary.edges().size()); ++e)
+  {
+    const Edge3D& edge = boundary.edges()[e];
+    if (edge.kind == VertexKind::Convex &&
+      ((a.count(edge.faceA) && b.count(edge.faceB)) || (a.count(edge.faceB) && b.count(edge.faceA))))
+      out.push_back(e);
+  }
+  return out;
+}
+
 std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<std::array<int, 2>>& pairs)
 {
@@ -816,10 +928,9 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     std::vector<SheetBorderCurve> curves;
     std::set<int> seams, edges;
     for (int s : group.traced)
-    {
       seams.insert(mat.sheets[s].seams.begin(), mat.sheets[s].seams.end());
-      edges.insert(mat.sheets[s].convexEdges.begin(), mat.sheets[s].convexEdges.end());
-    }
+    for (int e : convexEdgesBetween(boundary, generators, group))
+      edges.insert(e);
     for (int k : seams)
     {
       SheetBorderCurve curve;

@@ -87,6 +87,12 @@ struct SheetGroup
 std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<std::array<int, 2>>& pairs);
 
+/// The convex edges between a face of one side and a face of the other: where the sheet
+/// reaches the boundary with radius 0 (taken from the boundary, not from the traced sheets,
+/// which list an edge only with a pair some seam has).
+std::vector<int> convexEdgesBetween(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const SheetGroup& group);
+
 /// The sheet between sides a and b (sheetSide) bounded by `curves` (seams; only their
 /// stretches on this sheet are used) and the convex edges `convexEdges` (Boundary3D
 /// indices). Throws InputError naming the sheet when its border does not close or its
