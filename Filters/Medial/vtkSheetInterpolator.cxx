@@ -235,6 +235,8 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   SheetOptions options;
   options.tolerance = this->Tolerance;
   options.maxEdge = this->MaximumEdgeLength;
+  const PatchBoundary exact(boundary);
+  options.exact = &exact;
   const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
   std::vector<int> status(tuples, 1);
   std::vector<std::string> messages(tuples);
@@ -383,7 +385,6 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       const int sheetPoints = complex.countPoints(MedialPoint3DType::Sheet);
       stride = std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) / this->MaximumSheetPointsVerified);
     }
-    const PatchBoundary exact(boundary);
     MedialVerification v;
     withThreads(this->NumberOfThreads, [&]() {
       v = verifyMedialComplex(exact, complex, stride, std::max(1e-15, 64.0 * frame.inputRounding()), smpParallelFor());

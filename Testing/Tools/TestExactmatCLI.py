@@ -219,11 +219,11 @@ class ExactmatCLI(unittest.TestCase):
                         self.assertAlmostEqual(x[1], 0.0, places=12)
             self.assertGreater(middle, 0)
             self.assertTrue(os.path.exists(os.path.join(tmp, "box.png")))
-            # Sheets the filter cannot complete yet (the stepped block's rims) are a
-            # verification failure, exit 3, never a silent success.
-            r = run("3d", "--shape", "stepped-block", "--sheets", "-o", "steps.vtp", cwd=tmp)
-            self.assertEqual(r.returncode, 3, r.stdout + r.stderr)
-            self.assertIn("not covered by the sheets", r.stderr)
+            # Reflex edges, a reflex corner and rims: complete and verified too.
+            for shape in ("notched-cube", "stepped-block"):
+                r = run("3d", "--shape", shape, "--sheets", "-o", shape + ".vtp", cwd=tmp)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertIn("(0 failed)", r.stdout)
 
     def test_input_alone_picks_2d_or_3d(self):
         # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT. The solid: the box

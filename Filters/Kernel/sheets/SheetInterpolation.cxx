@@ -3,6 +3,7 @@
 #include "common/InputError.h"
 #include "geometry/ClosestPoint.h"
 #include "geometry/DomainTriangulation.h"
+#include "mat3d/PatchBoundary.h"
 
 #include <Eigen/Dense>
 
@@ -268,6 +269,12 @@ private:
     return piece;
   }
 
+  // A ball no other part of the boundary enters (when the exact boundary is known).
+  bool medial(const SheetVertex& v) const
+  {
+    return !Options.exact || std::abs(Options.exact->distance(v.x) - v.r) <= 1e-9 * Size;
+  }
+
   // The ball touching P at qp and O: Newton on (q_O, r) from the guess in v; the
   // bracketed distance root when Newton does not land on O.
   bool solve(const Vec2& qp, SheetVertex& v) const
@@ -528,14 +535,15 @@ private:
             consider(pieces[j].back(), freeSides(pieces[j]), static_cast<int>(j), true);
           }
           const SheetVertex target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
-          // Ends on different sides: the border turns where those sides meet.
-          SheetVertex corner;
-          if (!bestShares && cornerBetween(loop.back(), endSides, target, bestSides, corner))
-          {
-            appendGap(loop, corner);
-            loop.push_back(corner);
-            ++Mesh.gapVertices;
-          }
+          // Ends on different sides: the border turns where those sides meet (or along a
+          // third side between them).
+          if (!bestShares)
+            for (const SheetVertex& corner : cornersBetween(loop.back(), endSides, target, bestSides))
+            {
+              appendGap(loop, corner);
+              loop.push_back(corner);
+              ++Mesh.gapVertices;
+            }
           appendGap(loop, target);
           if (next < 0)
           {
@@ -593,48 +601,151 @@ private:
           out.emplace_back(member->entity(), side);
         }
       }
+    // A reflex edge on the other side: its normal arc's ends (θ = 0, θ = α, where the
+    // sheet goes on as one with the edge's faces) and its ends (t = 0, 1).
+    if (Side[O].kind() == GeneratorKind3D::ReflexEdge && Side[O].members().size() == 1)
+    {
+      auto onEdgeSide = [&](const Vec2& q, int side) {
+        const Generator3D& e = Side[O].first();
+        const double value[4] = { q.y(), q.y() - e.edgeAngle(q.x()), q.x(), q.x() - 1.0 };
+        return std::abs(value[side]) <= 1e-7;
+      };
+      for (int side = 0; side < 4; ++side)
+      {
+        const Vec2 middle = run.size() >= 3 ? run[run.size() / 2].q[O] : 0.5 * (run.front().q[O] + run.back().q[O]);
+        if (onEdgeSide(run.back().q[O], side) && !(run.size() >= 2 && onEdgeSide(middle, side)))
+          out.emplace_back(edgeSideKey(), side);
+      }
+    }
     return out;
   }
 
-  // Where the line of side `a` (through end `from`) meets the line of side `b` (through
-  // `to`) in P's parameters, as a sheet point: the nearest such corner on a path from one
-  // end to the other. A side of P is a line of its parameters; a side of O is the line its
-  // preimage is when both sides are planar (the map from P's touch to O's is affine).
-  bool cornerBetween(const SheetVertex& from, const std::vector<std::pair<int, int>>& a, const SheetVertex& to,
-    const std::vector<std::pair<int, int>>& b, SheetVertex& corner) const
+  /// Sides are (face, patch side); a reflex edge's are (edgeSideKey(), 0 … 3).
+  int edgeSideKey() const { return -2 - Side[O].first().entity(); }
+
+  // The corners the border turns at between two free ends on different sides: where a
+  // side of the first end meets a side of the second (one corner), or both meet a third
+  // side (two corners), each corner on both sides' segments and a point of the sheet; the
+  // shortest such path in P's parameters. A side of P is a segment of its parameters; a
+  // side of O is its preimage, a segment when both sides are planar (the map from P's touch
+  // to O's is affine). Sides between two faces of one side (smooth edges) are not borders.
+  std::vector<SheetVertex> cornersBetween(const SheetVertex& from, const std::vector<std::pair<int, int>>& a,
+    const SheetVertex& to, const std::vector<std::pair<int, int>>& b) const
   {
-    if (Projected)
-      return false;
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& sa : a)
-      for (const auto& sb : b)
+    if (Projected || a.empty() || b.empty())
+      return {};
+    struct Segment
+    {
+      std::pair<int, int> side;
+      Vec2 p0, p1;
+    };
+    auto segment = [&](const std::pair<int, int>& side, const SheetVertex& near, Segment& out) {
+      out.side = side;
+      return sideLine(side, near, out.p0, out.p1);
+    };
+    // Where two segments cross, as a sheet point.
+    auto meet = [&](const Segment& x, const Segment& y, const SheetVertex& guess, SheetVertex& corner) {
+      const Vec2 dx = x.p1 - x.p0, dy = y.p1 - y.p0;
+      const double den = dx.x() * dy.y() - dx.y() * dy.x();
+      if (std::abs(den) <= 1e-12 * dx.norm() * dy.norm())
+        return false;
+      const Vec2 w = y.p0 - x.p0;
+      const double s = (w.x() * dy.y() - w.y() * dy.x()) / den, t = (w.x() * dx.y() - w.y() * dx.x()) / den;
+      if (s < -1e-9 || s > 1.0 + 1e-9 || t < -1e-9 || t > 1.0 + 1e-9)
+        return false;
+      corner = guess;
+      if (!solve(x.p0 + s * dx, corner) || !medial(corner))
+        return false;
+      corner.border = true;
+      return true;
+    };
+    std::vector<Segment> first, last, middle;
+    for (const auto& side : a)
+      if (Segment g; segment(side, from, g))
+        first.push_back(g);
+    for (const auto& side : b)
+      if (Segment g; segment(side, to, g))
+        last.push_back(g);
+    SheetVertex guess = from;
+    guess.r = 0.5 * (from.r + to.r);
+    guess.q[O] = 0.5 * (from.q[O] + to.q[O]);
+    std::vector<SheetVertex> best;
+    double shortest = std::numeric_limits<double>::infinity();
+    auto offer = [&](const std::vector<SheetVertex>& path) {
+      double length = 0.0;
+      Vec2 at = from.domain;
+      for (const SheetVertex& v : path)
       {
-        Vec2 a0, a1, b0, b1;
-        if (!sideLine(sa, from, a0, a1) || !sideLine(sb, to, b0, b1))
-          continue;
-        const Vec2 da = a1 - a0, db = b1 - b0;
-        const double den = da.x() * db.y() - da.y() * db.x();
-        if (std::abs(den) <= 1e-12 * da.norm() * db.norm())
-          continue;
-        const Vec2 w = b0 - a0;
-        const Vec2 c = a0 + (w.x() * db.y() - w.y() * db.x()) / den * da;
-        const double length = (c - from.domain).norm() + (to.domain - c).norm();
-        SheetVertex v = from;
-        v.r = 0.5 * (from.r + to.r);
-        v.q[O] = 0.5 * (from.q[O] + to.q[O]);
-        if (length < best && solve(c, v))
-        {
-          best = length;
-          corner = v;
-          corner.border = true;
-        }
+        length += (v.domain - at).norm();
+        at = v.domain;
       }
-    return std::isfinite(best);
+      length += (to.domain - at).norm();
+      if (length < shortest)
+      {
+        shortest = length;
+        best = path;
+      }
+    };
+    for (const Segment& x : first)
+      for (const Segment& y : last)
+        if (SheetVertex c; meet(x, y, guess, c))
+          offer({ c });
+    if (!best.empty())
+      return best;
+    for (const auto& side : borderSides())
+      if (Segment g; segment(side, guess, g))
+        middle.push_back(g);
+    for (const Segment& x : first)
+      for (const Segment& m : middle)
+      {
+        SheetVertex c1;
+        if (m.side == x.side || !meet(x, m, guess, c1))
+          continue;
+        for (const Segment& y : last)
+          if (SheetVertex c2; m.side != y.side && meet(m, y, c1, c2))
+            offer({ c1, c2 });
+      }
+    return best;
+  }
+
+  // Every side of the pair's faces that is a border of its side (not a smooth edge
+  // between two faces of the same side).
+  std::vector<std::pair<int, int>> borderSides() const
+  {
+    std::vector<std::pair<int, int>> out;
+    for (int g : { P, O })
+    {
+      std::set<int> faces;
+      for (const Generator3D* m : Side[g].members())
+        if (m->kind() == GeneratorKind3D::Face)
+          faces.insert(m->entity());
+      for (const Edge3D& e : B.edges())
+      {
+        const bool a = faces.count(e.faceA) > 0, b = faces.count(e.faceB) > 0;
+        if (a && !b)
+          out.emplace_back(e.faceA, e.sideA);
+        else if (b && !a)
+          out.emplace_back(e.faceB, e.sideB);
+      }
+    }
+    if (Side[O].kind() == GeneratorKind3D::ReflexEdge && Side[O].members().size() == 1)
+      for (int side = 0; side < 4; ++side)
+        out.emplace_back(edgeSideKey(), side);
+    return out;
   }
 
   // Two points of the line a face side (face, patch side) is in P's parameters.
   bool sideLine(const std::pair<int, int>& side, const SheetVertex& near, Vec2& p0, Vec2& p1) const
   {
+    if (side.first < -1)
+    {
+      // A side of the reflex edge O: its ends in the edge's parameters (t, θ).
+      const Generator3D& e = Side[O].first();
+      const Vec2 ends[4][2] = { { Vec2(0, 0), Vec2(1, 0) }, { Vec2(0, e.edgeAngle(0)), Vec2(1, e.edgeAngle(1)) },
+        { Vec2(0, 0), Vec2(0, e.edgeAngle(0)) }, { Vec2(1, 0), Vec2(1, e.edgeAngle(1)) } };
+      return side.first == edgeSideKey() && preimageOf(Side[O].evaluate(ends[side.second][0]), near, p0) &&
+        preimageOf(Side[O].evaluate(ends[side.second][1]), near, p1);
+    }
     const BezierCurve curve = B.faces()[side.first].patch.side(side.second);
     auto onSide = [&side](const SheetSide& s) {
       for (const Generator3D* m : s.members())
@@ -654,7 +765,12 @@ private:
   // P's parameters of the ball that touches O at its point e (along O's normal there).
   bool preimage(const Vec3& e, const SheetVertex& near, Vec2& qp) const
   {
-    const Touch3D to = Side[O].evaluate(Side[O].parameterOf(e));
+    return preimageOf(Side[O].evaluate(Side[O].parameterOf(e)), near, qp);
+  }
+
+  // P's parameters of the ball that touches O as `to` says (point and normal).
+  bool preimageOf(const Touch3D& to, const SheetVertex& near, Vec2& qp) const
+  {
     qp = near.q[P];
     double r = near.r;
     for (int it = 0; it < 40; ++it)
@@ -727,6 +843,9 @@ private:
       if (!solve((1.0 - s) * from.domain + s * target.domain, v))
         fail("3D MAT sheets: the border of ", name(), " has an open end that cannot be closed along ",
           Side[P].name());
+      if (!medial(v))
+        fail("3D MAT sheets: closing the border of ", name(), " between two open ends leaves the MAT (at ",
+          v.x.transpose(), ")");
       v.border = true;
       loop.push_back(v);
       ++Mesh.gapVertices;
@@ -922,6 +1041,10 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   for (const MAT3DSheet& sheet : mat.sheets)
     pairs.push_back({ { sheet.generatorA, sheet.generatorB } });
   const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
+  const PatchBoundary exact(boundary);
+  SheetOptions checked = options;
+  if (!checked.exact)
+    checked.exact = &exact;
   std::vector<MedialSheetMesh> out;
   for (const SheetGroup& group : groups)
   {
@@ -946,7 +1069,7 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     try
     {
       out.push_back(interpolateSheet(boundary, generators, group.a, group.b, curves,
-        std::vector<int>(edges.begin(), edges.end()), options));
+        std::vector<int>(edges.begin(), edges.end()), checked));
     }
     catch (const InputError& e)
     {

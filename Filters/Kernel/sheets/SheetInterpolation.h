@@ -20,6 +20,7 @@
 
 #include "mat3d/Generator3D.h"
 #include "mat3d/MAT3D.h"
+#include "medial/SolidBoundary.h"
 
 #include <array>
 #include <string>
@@ -41,6 +42,10 @@ struct SheetOptions
   double tolerance = 1e-4; ///< centroid deviation (position, radius), fraction of the size
   double maxEdge = 0.05;   ///< longest triangle edge, fraction of the size
   int maxVertices = 200000;
+  /// The whole exact boundary (optional, recommended): the border's turning points and the
+  /// points that close it along a side are checked to be medial (distance = radius), so a
+  /// border closed the wrong way fails the sheet instead of filling outside the MAT.
+  const SolidBoundary* exact = nullptr;
 };
 
 struct SheetVertex
