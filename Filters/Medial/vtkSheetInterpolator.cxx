@@ -238,8 +238,30 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   const PatchBoundary exact(boundary);
   options.exact = &exact;
   const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
-  std::vector<int> status(tuples, 1);
-  std::vector<std::string> messages(tuples);
+  // Each group's tuples in the sheet arrays: its traced pairs', or a new tuple for a sheet
+  // no seam lists (faces meeting at a convex edge), appended to the output's arrays.
+  std::vector<std::vector<int>> tupleIds(groups.size());
+  std::vector<std::string> extraGovernors, extraEdges;
+  for (size_t k = 0; k < groups.size(); ++k)
+  {
+    tupleIds[k] = groups[k].traced;
+    if (tupleIds[k].empty())
+    {
+      tupleIds[k].push_back(tuples + static_cast<int>(extraGovernors.size()));
+      auto label = [&](const std::vector<int>& side) {
+        return generatorLabel(boundary, generators[side.front()].faces());
+      };
+      extraGovernors.push_back(label(groups[k].a) + "," + label(groups[k].b));
+      std::string edges;
+      for (int e : convexEdgesBetween(boundary, generators, groups[k]))
+        edges += (edges.empty() ? "" : " ") + faceLabel(boundary, boundary.edges()[e].faceA) + "/" +
+          faceLabel(boundary, boundary.edges()[e].faceB);
+      extraEdges.push_back(edges);
+    }
+  }
+  const int allTuples = tuples + static_cast<int>(extraGovernors.size());
+  std::vector<int> status(allTuples, 1);
+  std::vector<std::string> messages(allTuples);
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
@@ -290,7 +312,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     }
     catch (const InputError& e)
     {
-      for (int s : group.traced)
+      for (int s : tupleIds[k])
       {
         status[s] = -1;
         messages[s] = e.what();
@@ -301,7 +323,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     }
     if (mesh.triangles.empty())
     {
-      for (int s : group.traced)
+      for (int s : tupleIds[k])
         status[s] = 0;
       continue;
     }
@@ -336,7 +358,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     for (const auto& t : mesh.triangles)
       sheet.triangles.push_back({ { id[t[0]], id[t[1]], id[t[2]] } });
     this->NumberOfTriangles += static_cast<int>(sheet.triangles.size());
-    sheetOfElement[static_cast<int>(complex.elements.size())] = group.traced.front();
+    sheetOfElement[static_cast<int>(complex.elements.size())] = tupleIds[k].front();
     complex.elements.push_back(std::move(sheet));
     in.governors.push_back(label);
     meshes.push_back(std::move(mesh));
@@ -363,11 +385,25 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   }
   output->GetCellData()->AddArray(sheetId);
   output->GetFieldData()->PassData(mat->GetFieldData());
+  if (!extraGovernors.empty())
+  {
+    const char* names[3] = { arrays::SheetGovernors, arrays::SheetSeams, arrays::SheetConvexEdges };
+    for (int a = 0; a < 3; ++a)
+    {
+      vtkNew<vtkStringArray> extended;
+      extended->SetName(names[a]);
+      if (vtkStringArray* given = fieldStrings(mat, names[a]))
+        extended->DeepCopy(given);
+      for (size_t k = 0; k < extraGovernors.size(); ++k)
+        extended->InsertNextValue(a == 0 ? extraGovernors[k] : a == 1 ? std::string() : extraEdges[k]);
+      output->GetFieldData()->AddArray(extended);
+    }
+  }
   vtkNew<vtkIntArray> statusArray;
   statusArray->SetName(arrays::SheetStatus);
   vtkNew<vtkStringArray> messageArray;
   messageArray->SetName(arrays::SheetMessage);
-  for (int s = 0; s < tuples; ++s)
+  for (int s = 0; s < allTuples; ++s)
   {
     statusArray->InsertNextValue(status[s]);
     messageArray->InsertNextValue(messages[s]);

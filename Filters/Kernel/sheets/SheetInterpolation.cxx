@@ -1014,6 +1014,19 @@ std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vecto
       out.push_back({ a, b, {} });
     out[it->second].traced.push_back(static_cast<int>(s));
   }
+  // Two faces meeting at a convex edge always have a sheet there, even one no seam
+  // borders (its other borders all where it goes on as other pairs' sheets).
+  for (const Edge3D& edge : boundary.edges())
+  {
+    if (edge.kind != VertexKind::Convex)
+      continue;
+    std::vector<int> a = sheetSide(boundary, generators, edge.faceA);
+    std::vector<int> b = sheetSide(boundary, generators, edge.faceB);
+    if (b < a)
+      std::swap(a, b);
+    if (a != b && index.insert({ { a, b }, static_cast<int>(out.size()) }).second)
+      out.push_back({ a, b, {} });
+  }
   return out;
 }
 

@@ -83,11 +83,12 @@ struct MedialSheetMesh
 /// (a polygon split into a fan of triangles is one face to the sheets), sorted.
 std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g);
 
-/// Traced sheets (generator pairs) that are one sheet: the same two sides.
+/// Traced sheets (generator pairs) that are one sheet: the same two sides. Groups with no
+/// traced pair follow: faces meeting at a convex edge that no seam lists as a pair.
 struct SheetGroup
 {
   std::vector<int> a, b;    ///< the sides (sheetSide), a < b
-  std::vector<int> traced;  ///< indices into the given pairs
+  std::vector<int> traced;  ///< indices into the given pairs (empty: from a convex edge)
 };
 std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<std::array<int, 2>>& pairs);
