@@ -265,10 +265,14 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
+  // Each sheet's border curves, convex edges and label (checking the input as it goes).
+  std::vector<std::vector<SheetBorderCurve>> borders(groups.size());
+  std::vector<std::vector<int>> borderEdges(groups.size());
+  std::vector<std::string> labels(groups.size());
   for (size_t k = 0; k < groups.size(); ++k)
   {
     const SheetGroup& group = groups[k];
-    std::vector<SheetBorderCurve> curves;
+    std::vector<SheetBorderCurve>& curves = borders[k];
     std::set<int> seams, edges;
     for (int s : group.traced)
     {
@@ -303,22 +307,44 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
         out += (out.empty() ? "" : "+") + generatorLabel(boundary, generators[g].faces());
       return out;
     };
-    const std::string label = sideLabel(group.a) + "," + sideLabel(group.b);
-    MedialSheetMesh mesh;
-    try
-    {
-      mesh = interpolateSheet(boundary, generators, group.a, group.b, curves,
-        std::vector<int>(edges.begin(), edges.end()), options);
-    }
-    catch (const InputError& e)
+    labels[k] = sideLabel(group.a) + "," + sideLabel(group.b);
+    borderEdges[k].assign(edges.begin(), edges.end());
+  }
+  // The sheets are independent: filled in parallel (vtkSMPTools), each into its own slot.
+  std::vector<MedialSheetMesh> filled(groups.size());
+  std::vector<std::string> errors(groups.size());
+  withThreads(this->NumberOfThreads, [&]() {
+    smpParallelFor()(groups.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        try
+        {
+          filled[k] = interpolateSheet(boundary, generators, groups[k].a, groups[k].b, borders[k],
+            borderEdges[k], options);
+        }
+        catch (const InputError& e)
+        {
+          errors[k] = e.what();
+        }
+        catch (const std::exception& e)
+        {
+          errors[k] = std::string("internal error: ") + e.what();
+        }
+    });
+  });
+  this->UpdateProgress(0.7);
+  for (size_t k = 0; k < groups.size(); ++k)
+  {
+    const std::string& label = labels[k];
+    MedialSheetMesh& mesh = filled[k];
+    if (!errors[k].empty())
     {
       for (int s : tupleIds[k])
       {
         status[s] = -1;
-        messages[s] = e.what();
+        messages[s] = errors[k];
       }
-      failures.push_back(std::string("sheet ") + label + ": " + e.what());
-      vtkWarningMacro(<< "sheet " << label << " not interpolated: " << e.what());
+      failures.push_back(std::string("sheet ") + label + ": " + errors[k]);
+      vtkWarningMacro(<< "sheet " << label << " not interpolated: " << errors[k]);
       continue;
     }
     if (mesh.triangles.empty())
@@ -362,7 +388,6 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     complex.elements.push_back(std::move(sheet));
     in.governors.push_back(label);
     meshes.push_back(std::move(mesh));
-    this->UpdateProgress(0.8 * static_cast<double>(k + 1) / groups.size());
   }
   this->NumberOfSheets = static_cast<int>(groups.size());
   this->NumberOfFailedSheets = static_cast<int>(failures.size());

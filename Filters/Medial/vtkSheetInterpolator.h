@@ -75,7 +75,8 @@ public:
   /// 0 (default): every point is verified; else at most this many sheet points.
   vtkSetClampMacro(MaximumSheetPointsVerified, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumSheetPointsVerified, int);
-  /// Threads for the verification (vtkSMPTools, STDThread backend; 0 = every core).
+  /// Threads (vtkSMPTools, STDThread backend; 0 = every core): the sheets are filled in
+  /// parallel and verified in parallel, with the same result as on one thread.
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
 

@@ -278,3 +278,32 @@ TEST(vtkSheetInterpolator, WrongInputsAreErrors)
     EXPECT_TRUE(!errors->Messages.empty() || !sheets->GetVerificationPassed());
   }
 }
+
+TEST(vtkSheetInterpolator, ThreadsGiveTheSameSheets)
+{
+  // The sheets are filled in parallel, each into its own slot: bit for bit the same.
+  vtkNew<vtkNURBSSource> notched;
+  notched->SetShapeName("notched-cube");
+  vtkNew<vtkMAT3DFilter> mat;
+  mat->SetInputConnection(notched->GetOutputPort());
+  vtkSmartPointer<vtkPolyData> results[2];
+  for (int threads : { 1, 2 })
+  {
+    vtkNew<vtkSheetInterpolator> sheets;
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceConnection(notched->GetOutputPort());
+    sheets->SetNumberOfThreads(threads);
+    sheets->Update();
+    results[threads - 1] = vtkSmartPointer<vtkPolyData>::New();
+    results[threads - 1]->DeepCopy(sheets->GetOutput());
+  }
+  ASSERT_EQ(results[0]->GetNumberOfPoints(), results[1]->GetNumberOfPoints());
+  ASSERT_EQ(results[0]->GetNumberOfCells(), results[1]->GetNumberOfCells());
+  for (vtkIdType i = 0; i < results[0]->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    results[0]->GetPoint(i, a);
+    results[1]->GetPoint(i, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << i;
+  }
+}
