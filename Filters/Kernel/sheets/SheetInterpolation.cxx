@@ -560,12 +560,13 @@ private:
       }
       if (!closed)
         fail("3D MAT sheets: the border of ", name(), " does not close");
-      // Repeated parameters (a ball met twice along the border) would be one domain vertex.
+      // Repeated parameters (a ball met twice along the border, or two balls touching P at
+      // one point, where a seam passes through a corner of P) would be one domain vertex.
       std::vector<SheetVertex> clean;
       for (const SheetVertex& v : densified(loop))
-        if (clean.empty() || (v.domain - clean.back().domain).norm() > 1e-14)
+        if (clean.empty() || (v.domain - clean.back().domain).norm() > 1e-9)
           clean.push_back(v);
-      while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= 1e-14)
+      while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= 1e-9)
         clean.pop_back();
       if (clean.size() < 3)
         continue; // a stretch that folds back on itself bounds no area
