@@ -654,8 +654,13 @@ private:
       const double s = (w.x() * dy.y() - w.y() * dy.x()) / den, t = (w.x() * dx.y() - w.y() * dx.x()) / den;
       if (s < -1e-9 || s > 1.0 + 1e-9 || t < -1e-9 || t > 1.0 + 1e-9)
         return false;
+      // A corner at either end adds nothing (the path would run back along the end's own
+      // side, enclosing no area).
+      const Vec2 c = x.p0 + s * dx;
+      if ((c - from.domain).norm() <= 1e-9 || (c - to.domain).norm() <= 1e-9)
+        return false;
       corner = guess;
-      if (!solve(x.p0 + s * dx, corner) || !medial(corner))
+      if (!solve(c, corner) || !medial(corner))
         return false;
       corner.border = true;
       return true;
