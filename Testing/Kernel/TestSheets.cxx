@@ -119,6 +119,23 @@ TEST(Sheets, PillowSheetsAreCurvedAndExact)
   expectExactSheets(sheetsOf(patchPieces(makeShape("pillow").surfaces)), "pillow", 1e-3, 4);
 }
 
+TEST(Sheets, PatchSplitSurfacesMeetAlongThePatchBorders)
+{
+  // The pillow with every face cut into 3 x 3 sub-patches (the same solid, smooth edges
+  // between the patches): one sheet per pair of patches, together covering every face.
+  std::vector<PatchPiece> pieces;
+  for (const PatchPiece& p : patchPieces(makeShape("pillow").surfaces))
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+      {
+        PatchPiece q;
+        q.patch = p.patch.subPatch(i / 3.0, (i + 1) / 3.0, j / 3.0, (j + 1) / 3.0);
+        q.entity = p.entity;
+        pieces.push_back(std::move(q));
+      }
+  expectExactSheets(sheetsOf(pieces), "pillow, 3 x 3 patches a face", 1e-3, 10);
+}
+
 TEST(Sheets, BoxWithAFreeFormTop)
 {
   expectExactSheets(sheetsOf(boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5)), "free-form top", 1e-3);
