@@ -260,8 +260,12 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     }
   }
   const int allTuples = tuples + static_cast<int>(extraGovernors.size());
-  std::vector<int> status(allTuples, 1);
-  std::vector<std::string> messages(allTuples);
+  // A traced pair in no group has both generators in one plane (groupSheets): no sheet.
+  std::vector<int> status(allTuples, 0);
+  std::vector<std::string> messages(allTuples, "both generators lie in one plane: no sheet between them");
+  for (const std::vector<int>& ids : tupleIds)
+    for (int s : ids)
+      messages[s].clear();
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
@@ -354,6 +358,8 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       continue;
     }
     ++this->NumberOfInterpolatedSheets;
+    for (int s : tupleIds[k])
+      status[s] = 1;
     this->MaximumDeviation = std::max(this->MaximumDeviation, mesh.maxDeviation);
     // Vertices: the seams' own points where the sheet meets them, new points elsewhere.
     std::vector<int> id(mesh.vertices.size());

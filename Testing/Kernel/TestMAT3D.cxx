@@ -9,6 +9,7 @@
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
 #include "shapes/Catalogue.h"
+#include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
 
 #include <gtest/gtest.h>
@@ -53,25 +54,6 @@ Traced trace(const std::vector<PatchPiece>& pieces, const MAT3DOptions& options 
   t.boundary = std::make_unique<Boundary3D>(buildNormalised(pieces));
   t.mat = computeMAT3D(*t.boundary, options);
   return t;
-}
-
-// A rigid motion and scaling of every control point.
-std::vector<PatchPiece> moved(std::vector<PatchPiece> pieces, const Eigen::Matrix3d& rotation, double scale,
-  const Vec3& offset)
-{
-  auto map = [&](Vec4List& net) {
-    for (Vec4& h : net)
-      h = homogeneous(scale * (rotation * euclidean(h)) + offset, h.w());
-  };
-  for (PatchPiece& p : pieces)
-  {
-    Vec4List net = p.patch.homogeneousNet();
-    map(net);
-    p.patch = BezierPatch(p.patch.degreeU(), p.patch.degreeV(), std::move(net));
-    if (p.triangle)
-      map(p.triangle->points);
-  }
-  return pieces;
 }
 
 void expectClosedSheets(const Traced& t, const std::string& what);
@@ -617,7 +599,7 @@ TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
       const Vec3 offset = p.offset * Vec3(0.6, -0.8, 0.5);
       const std::string what = "solid " + std::to_string(s) + " scaled by " + std::to_string(p.scale) +
         ", moved by " + std::to_string(p.offset);
-      const Traced t = trace(moved(solids[s], rotation, p.scale, offset));
+      const Traced t = trace(movedPieces(solids[s], rotation, p.scale, offset));
       expectVerified(t, what);
       ASSERT_EQ(t.mat.junctionCount(), static_cast<int>(expected.size())) << what;
       EXPECT_EQ(t.mat.seams.size(), reference.mat.seams.size()) << what;

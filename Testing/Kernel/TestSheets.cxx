@@ -9,6 +9,7 @@
 #include "mat3d/MAT3D.h"
 #include "mat3d/PatchBoundary.h"
 #include "shapes/Catalogue.h"
+#include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
 #include "sheets/SheetInterpolation.h"
 
@@ -30,11 +31,21 @@ struct Sheets
   std::vector<std::pair<int, std::string>> failures;
 };
 
-Sheets sheetsOf(const std::vector<PatchPiece>& pieces, const SheetOptions& options = {})
+// viaUserFrame: the seams' balls taken to the user's frame and back first, as they reach
+// vtkSheetInterpolator through vtkMAT3DFilter's output (rounded to the input's position).
+Sheets sheetsOf(const std::vector<PatchPiece>& pieces, const SheetOptions& options = {}, bool viaUserFrame = false)
 {
   Sheets s;
   s.boundary = std::make_unique<Boundary3D>(buildNormalised(pieces));
   s.mat = computeMAT3D(*s.boundary);
+  const Normalisation& frame = s.boundary->userFrame();
+  if (viaUserFrame)
+    for (MAT3DSeam& seam : s.mat.seams)
+      for (MedialBall3D& ball : seam.balls)
+      {
+        ball.x = frame.toUnit(frame.toUser(ball.x));
+        ball.r = frame.lengthToUnit(frame.lengthToUser(ball.r));
+      }
   s.meshes = interpolateSheets(*s.boundary, s.mat, options, s.failures);
   return s;
 }
@@ -56,7 +67,8 @@ void expectExactSheets(const Sheets& s, const std::string& what, double coverage
       EXPECT_NEAR(exact.distance(v.x), v.r, 1e-9 * size) << what << " at " << v.x.transpose();
       if (!v.border)
       {
-        EXPECT_EQ(exact.touchpoints(v.x, v.r * (1.0 + 2e-9) + 1e-15 * size).size(), 2u)
+        const double rounding = std::max(1e-15, 64.0 * s.boundary->userFrame().inputRounding());
+        EXPECT_EQ(exact.touchpoints(v.x, v.r * (1.0 + 2e-9) + rounding * size).size(), 2u)
           << what << " at " << v.x.transpose();
       }
     }
@@ -152,6 +164,44 @@ TEST(Sheets, ReflexEdgesAndCornersHaveCurvedSheets)
   // The stepped block: sheets between two reflex edges closing on rims at their corners
   // (a plane for their domain), and borders turning twice around the block's foot.
   expectExactSheets(sheetsOf(patchPieces(makeShape("stepped-block").surfaces)), "stepped block", 1e-3);
+}
+
+// The same sheets wherever the solid sits, however large, turned or weighted. Each case
+// failed before its fix: the L prism turned (a border closed from a radius-0 corner,
+// whose reflex-edge angle means nothing, guessed the wrong root), the stepped block turned
+// (a seam's end ball whose reflex-edge angle sat 1e-8 past its limit was dropped, cutting
+// a sliver off a face; a reflex edge paired with the plane it borders), moved 4e5 × its
+// size (seam points known only to the input's rounding, 2e-11, made spikes in the domain),
+// scaled by 1e-6 (two faces of one plane paired).
+TEST(Sheets, MovedTurnedScaledAndReweightedSolidsHaveTheSameSheets)
+{
+  struct Case
+  {
+    std::string name;
+    std::vector<PatchPiece> pieces;
+    double angle, axisY, scale, offset, weights;
+  };
+  const std::vector<PatchPiece> lShape = lPrism(1.0, 2.5);
+  const std::vector<PatchPiece> notched = patchPieces(makeShape("notched-cube").surfaces);
+  const std::vector<PatchPiece> stepped = patchPieces(makeShape("stepped-block").surfaces);
+  const std::vector<Case> cases{
+    { "L prism turned", lShape, 0.15, 2.1, 1.0, 0.0, 1.0 },
+    { "L prism moved 1e7 x its size", lShape, 0.47, 2.0, 1.0, 1e7, 1.0 },
+    { "notched cube moved 4e5 x its size", notched, 27.0 * M_PI / 180.0, 2.0, 1.0, 4e5, 1.0 },
+    { "notched cube moved 1e7 x its size", notched, 0.47, 2.0, 1.0, 1e7, 1.0 },
+    { "stepped block turned (a)", stepped, 2.35, 4.3, 1.0, 0.0, 1.0 },
+    { "stepped block turned (b)", stepped, 0.15, 2.1, 1.0, 0.0, 1.0 },
+    { "stepped block moved 4e5 x its size", stepped, 27.0 * M_PI / 180.0, 2.0, 1.0, 4e5, 1.0 },
+    { "stepped block scaled by 1e-6", stepped, 27.0 * M_PI / 180.0, 2.0, 1e-6, 0.0, 1.0 },
+    { "stepped block, weights x 1e100", stepped, 0.47, 2.0, 1.0, 0.0, 1e100 },
+  };
+  for (const Case& c : cases)
+  {
+    const Eigen::Matrix3d rotation = Eigen::AngleAxisd(c.angle, Vec3(1.0, c.axisY, 3.0).normalized()).toRotationMatrix();
+    const Vec3 offset = c.scale * c.offset * Vec3(1.0, -1.0, 1.0);
+    const Sheets s = sheetsOf(movedPieces(c.pieces, rotation, c.scale, offset, c.weights), {}, true);
+    expectExactSheets(s, c.name, 1e-6, 3);
+  }
 }
 
 // Known gap, flagged rather than hidden: random staircases (grid solids whose exact

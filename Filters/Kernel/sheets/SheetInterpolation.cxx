@@ -107,7 +107,8 @@ public:
     P = Mesh.parameterisedBy;
     O = 1 - P;
     Projected = Side[0].kind() != GeneratorKind3D::Face && Side[1].kind() != GeneratorKind3D::Face;
-    Touch = 1e-8 * Size;
+    Rounding = boundary.userFrame().inputRounding();
+    Touch = slack(1e-8, 1e3);
   }
 
   std::string name() const { return "the sheet of " + Side[0].name() + " and " + Side[1].name(); }
@@ -126,7 +127,7 @@ public:
     pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
                    [this](const std::vector<SheetVertex>& piece) {
                      for (const SheetVertex& v : piece)
-                       if ((v.x - piece.front().x).norm() > 1e-8 * Size)
+                       if ((v.x - piece.front().x).norm() > Touch)
                          return false;
                      return true;
                    }),
@@ -145,7 +146,13 @@ private:
   const Boundary3D& B;
   const SheetOptions& Options;
   double Size;
+  /// The input's own rounding in the unit frame (Normalisation::inputRounding): a solid
+  /// far from the origin is known only to it, and so are its seams (MAT3D polishes them to
+  /// 64 times it). Every "same point" test below is the larger of a fixed fraction of the
+  /// size and a multiple of it, so a moved solid gives the same sheets.
+  double Rounding;
   double Touch;
+  double slack(double fraction, double roundings) const { return std::max(fraction, roundings * Rounding) * Size; }
   std::array<SheetSide, 2> Side;
   int P = 0, O = 1; ///< which side carries the parameter domain, and the other
   bool Projected = false; ///< the domain is a plane's (two reflex entities), not P's
@@ -168,10 +175,19 @@ private:
       bool known = false;
       for (const auto& piece : pieces)
         for (const SheetVertex& w : piece)
-          known = known || (w.x - v.x).norm() <= 1e-8 * Size;
+          known = known || (w.x - v.x).norm() <= Touch;
       if (!known)
         pieces.push_back({ v });
     }
+  }
+
+  // How far outside its domain a touch parameter of gen may be for a ball of radius r.
+  // A reflex edge's or corner's parameters are angles of the normal, known to the centre's
+  // accuracy over the radius: a seam's end ball (a junction, placed to Touch) touching
+  // where the edge meets a face has its angle at the limit only within Touch / r.
+  double parameterSlack(const SheetSide& gen, double r) const
+  {
+    return gen.kind() == GeneratorKind3D::Face ? Touch : std::min(1e-4, Touch / std::max(r, Touch));
   }
 
   // The parameter of g's touch of the ball (x, r), when the ball touches g there along
@@ -186,7 +202,7 @@ private:
     }
     q = gen.touchParameter(foot, x);
     const Touch3D t = gen.evaluate(q);
-    return (t.point + r * t.normal - x).norm() <= Touch && gen.exitSide(q, Touch) < 0;
+    return (t.point + r * t.normal - x).norm() <= Touch && gen.exitSide(q, parameterSlack(gen, r)) < 0;
   }
 
   // A ball of the curve on this sheet, with its touches; false when it is not.
@@ -272,7 +288,7 @@ private:
   // A ball no other part of the boundary enters (when the exact boundary is known).
   bool medial(const SheetVertex& v) const
   {
-    return !Options.exact || std::abs(Options.exact->distance(v.x) - v.r) <= 1e-9 * Size;
+    return !Options.exact || std::abs(Options.exact->distance(v.x) - v.r) <= slack(1e-9, 64.0);
   }
 
   // The ball touching P at qp and O: Newton on (q_O, r) from the guess in v; the
@@ -289,7 +305,7 @@ private:
       if (!bracket(tp, qo, r) || !newton(tp, qo, r))
         return false;
     }
-    if (r < -Touch || Side[O].exitSide(qo, Touch) >= 0)
+    if (r < -Touch || Side[O].exitSide(qo, parameterSlack(Side[O], r)) >= 0)
       return false;
     v.x = tp.point + r * tp.normal;
     v.r = std::max(r, 0.0);
@@ -366,9 +382,10 @@ private:
     }
     const Touch3D ta = Side[0].evaluate(qa), tb = Side[1].evaluate(qb);
     const Vec3 x = base + w * Normal;
-    if ((ta.point + r * ta.normal - x).norm() > 1e-12 * Size || (tb.point + r * tb.normal - x).norm() > 1e-12 * Size)
+    if ((ta.point + r * ta.normal - x).norm() > slack(1e-12, 64.0) || (tb.point + r * tb.normal - x).norm() > slack(1e-12, 64.0))
       return false;
-    if (r < -Touch || Side[0].exitSide(qa, Touch) >= 0 || Side[1].exitSide(qb, Touch) >= 0)
+    if (r < -Touch || Side[0].exitSide(qa, parameterSlack(Side[0], r)) >= 0 ||
+      Side[1].exitSide(qb, parameterSlack(Side[1], r)) >= 0)
       return false;
     v.x = x;
     v.r = std::max(r, 0.0);
@@ -400,11 +417,11 @@ private:
       if (d.norm() <= 1e-15 * (1.0 + qo.norm() + std::abs(r)) || f.norm() <= 1e-15 * Size)
       {
         const Touch3D end = Side[O].evaluate(qo);
-        return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= 1e-12 * Size;
+        return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= slack(1e-12, 64.0);
       }
     }
     const Touch3D end = Side[O].evaluate(qo);
-    return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= 1e-12 * Size;
+    return (tp.point + r * tp.normal - end.point - r * end.normal).norm() <= slack(1e-12, 64.0);
   }
 
   // distance(S + rN, O) − r falls monotonically in r (a distance changes at most as fast
@@ -435,7 +452,7 @@ private:
   // lines of P's parameters.
   std::vector<std::vector<SheetVertex>> chain(std::vector<std::vector<SheetVertex>>& pieces)
   {
-    const double join = 1e-8 * Size;
+    const double join = Touch;
     std::vector<bool> used(pieces.size(), false);
     std::vector<std::vector<SheetVertex>> loops;
     const size_t guardMax = 4 * pieces.size() + 8;
@@ -564,9 +581,9 @@ private:
       // one point, where a seam passes through a corner of P) would be one domain vertex.
       std::vector<SheetVertex> clean;
       for (const SheetVertex& v : densified(loop))
-        if (clean.empty() || (v.domain - clean.back().domain).norm() > 1e-9)
+        if (clean.empty() || (v.domain - clean.back().domain).norm() > slack(1e-9, 1e3) / Size)
           clean.push_back(v);
-      while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= 1e-9)
+      while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= slack(1e-9, 1e3) / Size)
         clean.pop_back();
       if (clean.size() < 3)
         continue; // a stretch that folds back on itself bounds no area
@@ -581,7 +598,7 @@ private:
   // on, leaving out those the run's middle lies on too (the side it runs along).
   std::vector<std::pair<int, int>> freeSides(const std::vector<SheetVertex>& run) const
   {
-    const double near = 1e-7 * Size;
+    const double near = slack(1e-7, 1e4);
     std::vector<std::pair<int, int>> out;
     for (int g : { P, O })
       for (const Generator3D* member : Side[g].members())
@@ -609,7 +626,7 @@ private:
       auto onEdgeSide = [&](const Vec2& q, int side) {
         const Generator3D& e = Side[O].first();
         const double value[4] = { q.y(), q.y() - e.edgeAngle(q.x()), q.x(), q.x() - 1.0 };
-        return std::abs(value[side]) <= 1e-7;
+        return std::abs(value[side]) <= slack(1e-7, 1e4) / Size;
       };
       for (int side = 0; side < 4; ++side)
       {
@@ -783,7 +800,7 @@ private:
     {
       const Touch3D tp = Side[P].evaluate(qp);
       const Vec3 f = tp.point + r * tp.normal - to.point - r * to.normal;
-      if (f.norm() <= 1e-13 * Size)
+      if (f.norm() <= slack(1e-13, 16.0))
         return true;
       Eigen::Matrix3d j;
       j.col(0) = tp.dPoint.col(0) + r * tp.dNormal.col(0);
@@ -843,10 +860,23 @@ private:
     for (int k = 1; k < n; ++k)
     {
       const double s = static_cast<double>(k) / n;
+      // Guesses for the touch on O: the last gap point's (continuation), the straight
+      // interpolation of the two ends', and the other end's where one end has radius 0
+      // (a reflex edge's angle or a corner's normal means nothing there).
+      const Vec2 qp = (1.0 - s) * from.domain + s * target.domain;
+      const double r = (1.0 - s) * from.r + s * target.r;
+      const SheetVertex& wide = from.r >= target.r ? from : target;
+      const std::array<Vec2, 3> guesses{ { loop.back().q[O], (1.0 - s) * from.q[O] + s * target.q[O], wide.q[O] } };
       SheetVertex v = from;
-      v.r = (1.0 - s) * from.r + s * target.r;
-      v.q[O] = (1.0 - s) * from.q[O] + s * target.q[O];
-      if (!solve((1.0 - s) * from.domain + s * target.domain, v))
+      bool solved = false;
+      for (size_t g = 0; g < guesses.size() && !solved; ++g)
+      {
+        v = from;
+        v.r = r;
+        v.q[O] = guesses[g];
+        solved = solve(qp, v);
+      }
+      if (!solved)
         fail("3D MAT sheets: the border of ", name(), " has an open end that cannot be closed along ",
           Side[P].name());
       if (!medial(v))
@@ -1004,6 +1034,22 @@ std::vector<int> convexEdgesBetween(const Boundary3D& boundary, const std::vecto
   return out;
 }
 
+namespace
+{
+// Whether side e is one reflex edge or corner of a face of side f (a face side).
+bool bordersOwnSide(const std::vector<Generator3D>& generators, const std::vector<int>& f, const std::vector<int>& e)
+{
+  if (e.size() != 1 || generators[e.front()].kind() == GeneratorKind3D::Face)
+    return false;
+  for (int g : f)
+    if (generators[g].kind() == GeneratorKind3D::Face)
+      for (int face : generators[e.front()].faces())
+        if (std::find(generators[g].faces().begin(), generators[g].faces().end(), face) != generators[g].faces().end())
+          return true;
+  return false;
+}
+} // namespace
+
 std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<std::array<int, 2>>& pairs)
 {
@@ -1015,6 +1061,11 @@ std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vecto
     std::vector<int> b = sheetSide(boundary, generators, pairs[s][1]);
     if (b < a)
       std::swap(a, b);
+    // Two faces of one coplanar group (a degenerate ball on the smooth edge between them,
+    // met where a seam crosses it) touch one plane, and so do a group and a reflex edge or
+    // corner on its own border: a ball touching both touches them at one point. No sheet.
+    if (a == b || bordersOwnSide(generators, a, b) || bordersOwnSide(generators, b, a))
+      continue;
     auto [it, added] = index.insert({ { a, b }, static_cast<int>(out.size()) });
     if (added)
       out.push_back({ a, b, {} });
