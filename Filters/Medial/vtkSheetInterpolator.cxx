@@ -101,10 +101,8 @@ InputComplex readComplex(vtkPolyData* mat, const Normalisation& frame)
   vtkDataArray* elementId = mat->GetCellData()->GetArray(arrays::ElementId);
   vtkDataArray* elementType = mat->GetCellData()->GetArray(arrays::ElementType);
   auto* governors = vtkStringArray::SafeDownCast(mat->GetCellData()->GetAbstractArray(arrays::Governors));
-  if (!radius || !type || !elementId || !elementType || !fieldStrings(mat, arrays::SheetGovernors) ||
-    !fieldStrings(mat, arrays::SheetSeams))
-    fail("input 0 is not vtkMAT3DFilter's output: it lacks Radius, PointType, ElementId, ElementType or the "
-         "sheets' topology (SheetGovernors, SheetSeams)");
+  if (!radius || !type || !elementId || !elementType)
+    fail("input 0 is not a MAT filter's output: it lacks Radius, PointType, ElementId or ElementType");
   const char* footNames[3] = { arrays::Footpoint0, arrays::Footpoint1, arrays::Footpoint2 };
   for (vtkIdType i = 0; i < mat->GetNumberOfPoints(); ++i)
   {
@@ -149,6 +147,13 @@ InputComplex readComplex(vtkPolyData* mat, const Normalisation& frame)
         el.points.push_back(static_cast<int>(ids->GetId(k)));
   }
   return in;
+}
+// The sheets vtkMAT25DFilter writes (exact: swept profile MAT segments, profile sheets,
+// mid-sheets).
+bool isSweptSheet(MedialElementType type)
+{
+  return type == MedialElementType::SweptSheet || type == MedialElementType::ProfileSheet ||
+    type == MedialElementType::MidSheet;
 }
 } // namespace
 
@@ -201,6 +206,17 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   const Normalisation& frame = boundary.userFrame();
   InputComplex in = readComplex(mat, frame);
   MedialComplex& complex = in.complex;
+  if (!fieldStrings(mat, arrays::SheetGovernors) || !fieldStrings(mat, arrays::SheetSeams))
+  {
+    bool swept = false;
+    for (const MedialElement& e : complex.elements)
+      swept = swept || isSweptSheet(e.type);
+    if (!swept)
+      fail("input 0 is neither vtkMAT3DFilter's output (it lacks the sheets' topology: SheetGovernors, "
+           "SheetSeams) nor vtkMAT25DFilter's (it has no swept, profile or mid-sheets)");
+    this->PassExactSheets(mat, boundary, in.complex, in.governors, output);
+    return;
+  }
   const std::vector<Generator3D> generators = medialGenerators(boundary);
 
   // The sheets' topology: generator pairs by label, seams by ElementId, convex edges by
@@ -442,25 +458,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   output->GetFieldData()->AddArray(statusArray);
   output->GetFieldData()->AddArray(messageArray);
 
-  VerificationOutcome outcome;
-  if (this->VerifyOutput)
-  {
-    t0 = std::chrono::steady_clock::now();
-    int stride = 1;
-    if (this->MaximumSheetPointsVerified > 0)
-    {
-      const int sheetPoints = complex.countPoints(MedialPoint3DType::Sheet);
-      stride = std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) / this->MaximumSheetPointsVerified);
-    }
-    MedialVerification v;
-    withThreads(this->NumberOfThreads, [&]() {
-      v = verifyMedialComplex(exact, complex, stride, std::max(1e-15, 64.0 * frame.inputRounding()), smpParallelFor());
-    });
-    this->VerificationSeconds = secondsSince(t0);
-    this->NumberOfVerifiedPoints = v.points;
-    this->NumberOfTouchpointMismatches = v.contactMismatches;
-    outcome = outcomeOf(v, this->VerificationTolerance, complex, frame);
-  }
+  VerificationOutcome outcome = this->VerifyPoints(exact, complex, frame);
   // Completeness: the sheets' footprints cover every face (each boundary point has one
   // maximal ball), whatever the points' own check says.
   this->MaximumCoverageShortfall = 0.0;
@@ -489,6 +487,79 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     outcome.report += std::string(outcome.report.empty() ? "" : "; ") + std::to_string(failures.size()) +
       " sheet(s) not interpolated (first: " + failures.front() + ")";
   }
+  attachVerification(output, outcome);
+  this->VerificationPassed = outcome.passed;
+  this->MaximumVerifiedError = outcome.maximumError;
+  if (!outcome.passed)
+    vtkWarningMacro(<< "verification failed: " << outcome.report);
+}
+
+VerificationOutcome vtkSheetInterpolator::VerifyPoints(
+  const PatchBoundary& exact, const MedialComplex& complex, const Normalisation& frame)
+{
+  VerificationOutcome outcome;
+  if (!this->VerifyOutput)
+    return outcome;
+  const auto t0 = std::chrono::steady_clock::now();
+  int stride = 1;
+  if (this->MaximumSheetPointsVerified > 0)
+  {
+    const int sheetPoints = complex.countPoints(MedialPoint3DType::Sheet);
+    stride = std::max(1, (sheetPoints + this->MaximumSheetPointsVerified - 1) / this->MaximumSheetPointsVerified);
+  }
+  MedialVerification v;
+  withThreads(this->NumberOfThreads, [&]() {
+    v = verifyMedialComplex(exact, complex, stride, std::max(1e-15, 64.0 * frame.inputRounding()), smpParallelFor());
+  });
+  this->VerificationSeconds = secondsSince(t0);
+  this->NumberOfVerifiedPoints = v.points;
+  this->NumberOfTouchpointMismatches = v.contactMismatches;
+  return outcomeOf(v, this->VerificationTolerance, complex, frame);
+}
+
+// vtkMAT25DFilter's sheets are exact already (the profile's MAT points swept exactly):
+// they pass through, each sheet element numbered as a sheet, and its points are checked
+// against the source like the interpolated ones.
+void vtkSheetInterpolator::PassExactSheets(vtkPolyData* mat, const Boundary3D& boundary,
+  const MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output)
+{
+  output->ShallowCopy(mat);
+  std::map<int, int> sheetOfElement;
+  vtkNew<vtkStringArray> sheetGovernors;
+  sheetGovernors->SetName(arrays::SheetGovernors);
+  vtkNew<vtkIntArray> statusArray;
+  statusArray->SetName(arrays::SheetStatus);
+  vtkNew<vtkStringArray> messageArray;
+  messageArray->SetName(arrays::SheetMessage);
+  for (int e = 0; e < static_cast<int>(complex.elements.size()); ++e)
+    if (isSweptSheet(complex.elements[e].type) && !complex.elements[e].triangles.empty())
+    {
+      sheetOfElement[e] = static_cast<int>(sheetOfElement.size());
+      sheetGovernors->InsertNextValue(e < static_cast<int>(governors.size()) ? governors[e] : std::string());
+      statusArray->InsertNextValue(1);
+      messageArray->InsertNextValue(std::string("exact ") + toString(complex.elements[e].type) +
+        " from vtkMAT25DFilter (passed through)");
+      this->NumberOfTriangles += static_cast<int>(complex.elements[e].triangles.size());
+    }
+  this->NumberOfSheets = this->NumberOfInterpolatedSheets = static_cast<int>(sheetOfElement.size());
+  vtkDataArray* elementIds = mat->GetCellData()->GetArray(arrays::ElementId);
+  vtkNew<vtkIntArray> sheetId;
+  sheetId->SetName(arrays::SheetId);
+  sheetId->SetNumberOfTuples(output->GetNumberOfCells());
+  for (vtkIdType c = 0; c < output->GetNumberOfCells(); ++c)
+  {
+    const auto it = sheetOfElement.find(static_cast<int>(elementIds->GetTuple1(c)));
+    sheetId->SetValue(c, it == sheetOfElement.end() ? -1 : it->second);
+  }
+  output->GetCellData()->AddArray(sheetId);
+  output->GetFieldData()->AddArray(sheetGovernors);
+  output->GetFieldData()->AddArray(statusArray);
+  output->GetFieldData()->AddArray(messageArray);
+  const PatchBoundary exact(boundary);
+  const VerificationOutcome outcome = this->VerifyPoints(exact, complex, boundary.userFrame());
+  // (Coverage needs each sheet point's touchpoints, which vtkMAT25DFilter does not write:
+  // not measured here; its sheets cover the solid by construction.)
+  this->MaximumCoverageShortfall = 0.0;
   attachVerification(output, outcome);
   this->VerificationPassed = outcome.passed;
   this->MaximumVerifiedError = outcome.maximumError;

@@ -4,9 +4,14 @@
  *          vtkMAT3DFilter's seams and junctions, the complete MAT (thesis §6.3.9).
  *
  * Input port 0: vtkMAT3DFilter's output (the seam graph and, as field data, each sheet's
- * generator pair and bounding seams and convex edges). Input port 1 (the source, as
- * vtkProbeFilter takes it: SetSourceConnection / SetSourceData): the exact boundary the
- * MAT was computed from.
+ * generator pair and bounding seams and convex edges), or vtkMAT25DFilter's (its swept,
+ * profile and mid-sheets are exact already: they pass through unchanged, each sheet element
+ * numbered in `SheetId` with `SheetStatus` 1 and its `Governors` in `SheetGovernors`, and
+ * every point is verified against the source like the interpolated ones; the coverage
+ * check needs touchpoints the 2.5D output does not carry and is skipped). Input port 1
+ * (the source, as vtkProbeFilter takes it: SetSourceConnection / SetSourceData): the exact
+ * boundary the MAT was computed from (for vtkMAT25DFilter: the swept solid, as
+ * vtkNURBSSource's Sweep makes it).
  *
  * Output: one vtkPolyData — the input's junctions, seams and skeletal edges unchanged, and
  * every sheet as triangles sharing point ids with the seams on its border. Point data as
@@ -46,7 +51,18 @@
 #include "ExactMATFiltersMedialModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string> // for PassExactSheets
+#include <vector> // for PassExactSheets
+
 class vtkUnstructuredGrid;
+namespace exactmat
+{
+class Boundary3D;
+class PatchBoundary;
+struct MedialComplex;
+struct Normalisation;
+struct VerificationOutcome;
+}
 
 class EXACTMATFILTERSMEDIAL_EXPORT vtkSheetInterpolator : public vtkPolyDataAlgorithm
 {
@@ -108,6 +124,10 @@ private:
   void operator=(const vtkSheetInterpolator&) = delete;
 
   void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output);
+  void PassExactSheets(vtkPolyData* mat, const exactmat::Boundary3D& boundary,
+    const exactmat::MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output);
+  exactmat::VerificationOutcome VerifyPoints(const exactmat::PatchBoundary& exact,
+    const exactmat::MedialComplex& complex, const exactmat::Normalisation& frame);
 
   double Tolerance = 1e-4;
   double MaximumEdgeLength = 0.05;

@@ -5,6 +5,7 @@
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATBoundaryConversion.h"
 #include "vtkMAT2DFilter.h"
+#include "vtkMAT25DFilter.h"
 #include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
 #include "vtkSheetInterpolator.h"
@@ -41,11 +42,15 @@ struct Pipeline
   vtkNew<vtkSheetInterpolator> sheets;
   vtkSmartPointer<ErrorRecorder> errors, warnings;
 
-  explicit Pipeline(vtkAlgorithm* solid)
+  // sheetPointsVerified: vtkSheetInterpolator's MaximumSheetPointsVerified (0: all).
+  explicit Pipeline(vtkAlgorithm* solid, int sheetPointsVerified = 0)
   {
     mat->SetInputConnection(solid->GetOutputPort());
     sheets->SetInputConnection(mat->GetOutputPort());
     sheets->SetSourceConnection(solid->GetOutputPort());
+    sheets->SetMaximumSheetPointsVerified(sheetPointsVerified);
+    // (The interpolator verifies the seam graph's points again, with its sheets.)
+    mat->SetVerifyOutput(sheetPointsVerified == 0);
     errors = ErrorRecorder::watch(sheets);
     warnings = vtkSmartPointer<ErrorRecorder>::Take(ErrorRecorder::New());
     sheets->AddObserver(vtkCommand::WarningEvent, warnings);
@@ -218,6 +223,94 @@ TEST(vtkSheetInterpolator, SteppedBlockIsCompleteAndExact)
   EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
 }
 
+TEST(vtkSheetInterpolator, SweptSolidsFromEitherFilterAgree)
+{
+  // vtkMAT25DFilter's output (exact swept sheets) passes through, numbered as sheets and
+  // verified against the solid; the same solid through vtkMAT3DFilter and the
+  // interpolation gives the same total sheet area and the same largest radius.
+  for (const auto& [name, length] : { std::pair<std::string, double>{ "rectangle", 3.0 }, { "l-shape", 2.5 } })
+  {
+    vtkNew<vtkNURBSSource> profile, solid;
+    profile->SetShapeName(name.c_str());
+    solid->SetShapeName(name.c_str());
+    solid->SetSweep(vtkNURBSSource::SweepExtrusion);
+    solid->SetLength(length);
+    vtkNew<vtkMAT25DFilter> swept;
+    swept->SetInputConnection(profile->GetOutputPort());
+    swept->SetLength(length);
+    swept->SetVerifyOutput(false); // the interpolator verifies every point it passes
+    vtkNew<vtkSheetInterpolator> passed;
+    passed->SetInputConnection(swept->GetOutputPort());
+    passed->SetSourceConnection(solid->GetOutputPort());
+    passed->SetMaximumSheetPointsVerified(300);
+    auto errors = ErrorRecorder::watch(passed);
+    passed->Update();
+    ASSERT_TRUE(errors->Messages.empty()) << name << ": " << errors->Messages;
+    EXPECT_TRUE(passed->GetVerificationPassed()) << name;
+    EXPECT_GT(passed->GetNumberOfSheets(), 0) << name;
+    EXPECT_EQ(passed->GetNumberOfFailedSheets(), 0) << name;
+    vtkPolyData* out = passed->GetOutput();
+    auto* sheetId = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray(arrays::SheetId));
+    ASSERT_NE(sheetId, nullptr) << name;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+      if (out->GetCellType(c) == VTK_TRIANGLE)
+      {
+        ASSERT_GE(sheetId->GetValue(c), 0) << name << ": triangle " << c;
+      }
+    auto* status = vtkIntArray::SafeDownCast(out->GetFieldData()->GetArray(arrays::SheetStatus));
+    ASSERT_NE(status, nullptr) << name;
+    EXPECT_EQ(status->GetNumberOfValues(), passed->GetNumberOfSheets()) << name;
+
+    Pipeline traced(solid, 300);
+    ASSERT_TRUE(traced.errors->Messages.empty()) << name << ": " << traced.errors->Messages;
+    EXPECT_TRUE(traced.sheets->GetVerificationPassed()) << name << ": " << traced.warnings->Messages;
+    const double area = sheetArea(out);
+    EXPECT_NEAR(sheetArea(traced.sheets->GetOutput()), area, 1e-3 * area) << name;
+    double range[2], tracedRange[2];
+    out->GetPointData()->GetArray(arrays::Radius)->GetRange(range);
+    traced.sheets->GetOutput()->GetPointData()->GetArray(arrays::Radius)->GetRange(tracedRange);
+    EXPECT_NEAR(tracedRange[1], range[1], 1e-9 * range[1]) << name;
+  }
+}
+
+TEST(vtkSheetInterpolator, RevolvedSolidsSheetsPassThroughVerified)
+{
+  vtkNew<vtkNURBSSource> profile, solid;
+  profile->SetShapeName("rectangle");
+  solid->SetShapeName("rectangle");
+  const double axis[3] = { -3.0, 0.0, 0.0 };
+  solid->SetSweep(vtkNURBSSource::SweepRevolution);
+  solid->SetSweepAngle(90.0);
+  solid->SetSweepAxisOrigin(const_cast<double*>(axis));
+  vtkNew<vtkMAT25DFilter> swept;
+  swept->SetInputConnection(profile->GetOutputPort());
+  swept->SetSweepTypeToRevolution();
+  swept->SetAngle(90.0);
+  swept->SetAxisOrigin(const_cast<double*>(axis));
+  vtkNew<vtkSheetInterpolator> passed;
+  passed->SetInputConnection(swept->GetOutputPort());
+  passed->SetSourceConnection(solid->GetOutputPort());
+  passed->SetMaximumSheetPointsVerified(300);
+  auto errors = ErrorRecorder::watch(passed);
+  passed->Update();
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  EXPECT_TRUE(passed->GetVerificationPassed());
+  EXPECT_GT(passed->GetNumberOfSheets(), 0);
+  EXPECT_GT(passed->GetNumberOfVerifiedPoints(), 300);
+  // The wrong solid as the source (the profile extruded, not revolved): the sheets' balls
+  // are not medial in it, and the verification says so.
+  vtkNew<vtkNURBSSource> wrong;
+  wrong->SetShapeName("rectangle");
+  wrong->SetSweep(vtkNURBSSource::SweepExtrusion);
+  wrong->SetLength(3.0);
+  passed->SetSourceConnection(wrong->GetOutputPort());
+  auto warnings = vtkSmartPointer<ErrorRecorder>::Take(ErrorRecorder::New());
+  passed->AddObserver(vtkCommand::WarningEvent, warnings);
+  passed->Update();
+  EXPECT_FALSE(passed->GetVerificationPassed());
+  EXPECT_NE(warnings->Messages.find("verification failed"), std::string::npos) << warnings->Messages;
+}
+
 TEST(vtkSheetInterpolator, IncompleteSheetsFailTheVerificationLoudly)
 {
   // A random staircase (a grid solid: sides and corners of many faces at one point) whose
@@ -267,7 +360,7 @@ TEST(vtkSheetInterpolator, WrongInputsAreErrors)
     sheets->SetSourceConnection(source->GetOutputPort());
     auto errors = ErrorRecorder::watch(sheets);
     sheets->Update();
-    EXPECT_NE(errors->Messages.find("not vtkMAT3DFilter's output"), std::string::npos) << errors->Messages;
+    EXPECT_NE(errors->Messages.find("not a MAT filter's output"), std::string::npos) << errors->Messages;
   }
   // The MAT of one solid with the faces of another: never a silent success.
   {
