@@ -616,3 +616,35 @@ TEST(MAT3D, InvariantUnderMotionScaleAndPosition)
     }
   }
 }
+
+// Planar faces (linear triangles, bilinear quadrilaterals whose corners lie in one plane,
+// quadrilaterals with a collapsed side — the swept L's profile tiles — as triangles) take
+// the closed-form nearest point; it must agree with the general patch search, inside and
+// outside the solid.
+TEST(PatchBoundary, PlanarFacesAgreeWithThePatchSearch)
+{
+  const Boundary2D profile = Boundary2D::build(curvePieces(makeShape("l-shape").curves));
+  const Generators generators(profile);
+  const MedialGraph graph = computeMAT2D(generators);
+  const SweepMap sweep(profile, Sweep::extrusion(2.5));
+  std::vector<std::vector<PatchPiece>> solids{ sweptSolidFaces(generators, graph, sweep),
+    boxPolyhedron(2.0, 1.5, 1.0), patchPieces(makeShape("notched-cube").surfaces) };
+  // A wedge whose quadrilaterals are skewed (not parallelograms).
+  solids.push_back(polyhedron({ Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1.5, 0), Vec3(0, 0, 1), Vec3(2, 0, 0.5) },
+    { { 0, 3, 2, 1 }, { 0, 1, 5, 4 }, { 1, 2, 5 }, { 3, 0, 4 }, { 4, 5, 2, 3 } }));
+  std::mt19937 rng(3);
+  for (size_t s = 0; s < solids.size(); ++s)
+  {
+    const Boundary3D b = buildNormalised(solids[s]);
+    const PatchBoundary boundary(b);
+    std::uniform_real_distribution<double> coordinate(-1.2, 1.2);
+    for (int k = 0; k < 200; ++k)
+    {
+      const Vec3 x(coordinate(rng), coordinate(rng), coordinate(rng));
+      double searched = Unbounded;
+      for (const Face3D& f : b.faces())
+        searched = std::min(searched, closestPoint(f.patch, x).distance);
+      EXPECT_NEAR(boundary.distance(x), searched, 1e-12) << "solid " << s << " at " << x.transpose();
+    }
+  }
+}

@@ -9,25 +9,27 @@ namespace exactmat
 
 namespace
 {
-// The nearest point of a flat triangle abc to x (the triangle is convex: its only local
-// minimum), and whether it lies on the triangle's border. Closed form: the patch search
-// is slow on the collapsed side of a triangle stored as a patch.
-Vec3 nearestOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x, bool* border)
+// The nearest point of a flat convex polygon (corners in order) to x — its only local
+// minimum — and whether it lies on the polygon's border. Closed form: the patch search is
+// slow on planar faces (a bilinear quad, or a triangle stored as a patch with a collapsed
+// side), and most faces of real parts are planar.
+Vec3 nearestOnPolygon(const Vec3* corners, int n, const Vec3& x, bool* border)
 {
-  const Vec3 ab = b - a, ac = c - a, n = ab.cross(ac);
-  const Vec3 p = x - n * (n.dot(x - a) / n.squaredNorm());
-  // Barycentric signs of the projection: inside when all three sub-triangles agree.
-  const bool inside = n.dot((b - a).cross(p - a)) >= 0.0 && n.dot((c - b).cross(p - b)) >= 0.0 &&
-    n.dot((a - c).cross(p - c)) >= 0.0;
+  Vec3 normal = Vec3::Zero();
+  for (int i = 0; i < n; ++i) // Newell's normal: any convex polygon, either orientation
+    normal += corners[i].cross(corners[(i + 1) % n]);
+  const Vec3 p = x - normal * (normal.dot(x - corners[0]) / normal.squaredNorm());
+  bool inside = true;
+  for (int i = 0; i < n && inside; ++i)
+    inside = normal.dot((corners[(i + 1) % n] - corners[i]).cross(p - corners[i])) >= 0.0;
   *border = !inside;
   if (inside)
     return p;
-  Vec3 best = a;
+  Vec3 best = corners[0];
   double bestDistance = INFINITY;
-  const Vec3 corners[3] = { a, b, c };
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < n; ++i)
   {
-    const Vec3 s = corners[i], e = corners[(i + 1) % 3] - s;
+    const Vec3 s = corners[i], e = corners[(i + 1) % n] - s;
     const double t = std::clamp((x - s).dot(e) / e.squaredNorm(), 0.0, 1.0);
     const Vec3 q = s + t * e;
     if ((q - x).norm() < bestDistance)
@@ -39,24 +41,61 @@ Vec3 nearestOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
   return best;
 }
 
-bool flatTriangle(const Face3D& f, Vec3* corners)
+// The corners of a flat convex polygon face, in order: a linear triangle, or a bilinear
+// patch whose four corners lie in one plane (to `flat`, a length) as a convex
+// quadrilateral (a bilinear map, rational or not, takes the square onto exactly that
+// quadrilateral then). 0 when the face is neither.
+int flatPolygon(const Face3D& f, double flat, Vec3* corners)
 {
-  if (!f.triangle || f.triangle->degree != 1)
-    return false;
-  const TriangleNet& t = *f.triangle;
-  corners[0] = euclidean(t.at(0, 0));
-  corners[1] = euclidean(t.at(1, 0));
-  corners[2] = euclidean(t.at(0, 1));
-  return true;
+  if (f.triangle)
+  {
+    if (f.triangle->degree != 1)
+      return 0;
+    const TriangleNet& t = *f.triangle;
+    corners[0] = euclidean(t.at(0, 0));
+    corners[1] = euclidean(t.at(1, 0));
+    corners[2] = euclidean(t.at(0, 1));
+    return 3;
+  }
+  if (f.patch.degreeU() != 1 || f.patch.degreeV() != 1)
+    return 0;
+  // Corners in order; a collapsed side (two corners at one point: a triangle tiled as a
+  // quadrilateral) leaves a triangle.
+  const Vec3 all[4] = { f.patch.controlPoint(0, 0), f.patch.controlPoint(1, 0), f.patch.controlPoint(1, 1),
+    f.patch.controlPoint(0, 1) };
+  int n = 0;
+  for (const Vec3& c : all)
+    if (n == 0 || (c - corners[n - 1]).norm() > flat)
+      corners[n++] = c;
+  if (n > 1 && (corners[n - 1] - corners[0]).norm() <= flat)
+    --n;
+  if (n < 3)
+    return 0;
+  Vec3 normal = Vec3::Zero();
+  for (int i = 0; i < n; ++i)
+    normal += corners[i].cross(corners[(i + 1) % n]);
+  const double size = (all[2] - all[0]).norm() + (all[3] - all[1]).norm();
+  if (!(normal.norm() > 1e-12 * size * size))
+    return 0;
+  const Vec3 unit = normal.normalized();
+  for (int i = 0; i < n; ++i)
+  {
+    if (std::abs(unit.dot(corners[i] - corners[0])) > flat)
+      return 0;
+    if (unit.dot((corners[(i + 1) % n] - corners[i]).cross(corners[(i + 2) % n] - corners[(i + 1) % n])) <= 0.0)
+      return 0; // not strictly convex
+  }
+  return n;
 }
 
-PatchFootpoint nearestOnFace(const Face3D& f, const Vec3& x)
+PatchFootpoint nearestOnFace(const Face3D& f, double flat, const Vec3& x)
 {
-  Vec3 c[3];
-  if (!flatTriangle(f, c))
+  Vec3 c[4];
+  const int n = flatPolygon(f, flat, c);
+  if (n == 0)
     return closestPoint(f.patch, x);
   PatchFootpoint fp;
-  fp.point = nearestOnTriangle(c[0], c[1], c[2], x, &fp.onBoundary);
+  fp.point = nearestOnPolygon(c, n, x, &fp.onBoundary);
   fp.distance = (fp.point - x).norm();
   return fp;
 }
@@ -76,12 +115,15 @@ PatchBoundary::PatchBoundary(const Boundary3D& boundary)
   Size = all.diagonal().norm();
   const Vec3 extent = all.diagonal().cwiseAbs();
   Aspect = extent.maxCoeff() / std::max(extent.minCoeff(), 1e-300 * extent.maxCoeff());
+  // A quadrilateral face is planar to the input's rounding (a part far from the origin has
+  // its corners rounded off their plane by that much, and is still a polyhedron).
+  Flat = std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
 }
 
 double PatchBoundary::distance(const Vec3& x) const
 {
   double d = Unbounded;
-  Tree.nearest(x, [&](int i) { return nearestOnFace(Boundary->faces()[i], x).distance; }, &d);
+  Tree.nearest(x, [&](int i) { return nearestOnFace(Boundary->faces()[i], Flat, x).distance; }, &d);
   return d;
 }
 
@@ -91,7 +133,7 @@ Vec3 PatchBoundary::nearestPoint(const Vec3& x) const
   double best = Unbounded;
   Tree.nearest(x,
     [&](int i) {
-      const PatchFootpoint f = nearestOnFace(Boundary->faces()[i], x);
+      const PatchFootpoint f = nearestOnFace(Boundary->faces()[i], Flat, x);
       if (f.distance < best)
       {
         best = f.distance;
@@ -108,10 +150,10 @@ std::vector<SolidBoundary::Contact> PatchBoundary::touchpoints(const Vec3& x, do
   std::vector<Minimum> minima;
   for (int i : Tree.candidatesWithin(x, radius))
   {
-    Vec3 c[3];
-    if (flatTriangle(Boundary->faces()[i], c))
+    Vec3 c[4];
+    if (flatPolygon(Boundary->faces()[i], Flat, c) > 0)
     {
-      const PatchFootpoint f = nearestOnFace(Boundary->faces()[i], x);
+      const PatchFootpoint f = nearestOnFace(Boundary->faces()[i], Flat, x);
       if (f.distance <= radius)
         minima.push_back({ f.point, f.distance, f.onBoundary, i });
       continue;

@@ -29,6 +29,7 @@ private:
   const Boundary3D* Boundary;
   BoundingVolumeHierarchy Tree;
   double Size = 1.0, Aspect = 1.0;
+  double Flat = 0.0; ///< how far off its plane a quadrilateral face may be and still count as flat
 };
 
 } // namespace exactmat
