@@ -975,8 +975,11 @@ private:
       centroid.r = (a.r + b.r + c.r) / 3.0;
       centroid.q[O] = (a.q[O] + b.q[O] + c.q[O]) / 3.0;
       if (solve((a.domain + b.domain + c.domain) / 3.0, centroid))
+      {
         worst = std::max(worst, std::max((centroid.x - (a.x + b.x + c.x) / 3.0).norm(),
                                   std::abs(centroid.r - (a.r + b.r + c.r) / 3.0)));
+        Mesh.checkPoints.push_back(centroid);
+      }
     }
     Mesh.maxDeviation = worst / Size;
     // Refinement stops at slivers along the border; a sheet still far from the exact one

@@ -75,6 +75,9 @@ struct MedialSheetMesh
   int loops = 0;            ///< border loops (1 + holes, or several pieces)
   int gapVertices = 0;      ///< border vertices solved along a side of P's domain
   double maxDeviation = 0.0; ///< largest centroid deviation of the final triangles, fraction of the size
+  /// The exact balls at the domain centroids of the final triangles (where they solve):
+  /// sheet points that are not vertices, to measure a fit between the vertices (SheetFit).
+  std::vector<SheetVertex> checkPoints;
   double area() const;
 };
 
