@@ -42,6 +42,9 @@
  * vtkSheetInterpolator adds the sheets as triangles (`ElementType` 7) with cell data
  * `SheetId` (int: the sheet's tuple above, −1 for other cells) and field data
  * `SheetStatus` (int per tuple: 1 interpolated, 0 empty, −1 failed) and `SheetMessage`.
+ * Its second output (the sheets' B-spline fits as Bézier cells) has point data `Radius`
+ * (the radius's Bézier coefficients), cell data `SheetId` and `SheetFitError` (the sheet's
+ * largest fit error / size), and `SheetFitError` per sheet tuple as field data (−1: none).
  *
  * Verification (field data of every MAT output, when VerifyOutput is on):
  * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
@@ -84,6 +87,7 @@ constexpr const char* SheetConvexEdges = "SheetConvexEdges";
 constexpr const char* SheetId = "SheetId";
 constexpr const char* SheetStatus = "SheetStatus";
 constexpr const char* SheetMessage = "SheetMessage";
+constexpr const char* SheetFitError = "SheetFitError";
 constexpr const char* VerificationStatus = "VerificationStatus";
 constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
 constexpr const char* VerificationReport = "VerificationReport";

@@ -9,12 +9,14 @@
 #include "common/InputError.h"
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
+#include "sheets/SheetFit.h"
 #include "sheets/SheetInterpolation.h"
 
 #include "vtkExactMATArrayNames.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
@@ -39,6 +41,7 @@ vtkStandardNewMacro(vtkSheetInterpolator);
 vtkSheetInterpolator::vtkSheetInterpolator()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
 }
 
 vtkSheetInterpolator::~vtkSheetInterpolator() = default;
@@ -56,6 +59,13 @@ void vtkSheetInterpolator::SetSourceData(vtkDataObject* source)
 int vtkSheetInterpolator::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  return 1;
+}
+
+int vtkSheetInterpolator::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  // Port 0: the MAT with its sheets; port 1: the sheets' B-spline fits as Bézier cells.
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
   return 1;
 }
 
@@ -162,7 +172,11 @@ int vtkSheetInterpolator::RequestData(
 {
   vtkPolyData* mat = vtkPolyData::GetData(inputVector[0]);
   vtkUnstructuredGrid* boundary = vtkUnstructuredGrid::GetData(inputVector[1]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkUnstructuredGrid* fits = vtkUnstructuredGrid::GetData(outputVector, 1);
+  fits->Initialize();
+  this->NumberOfFitPatches = this->NumberOfSheetsAboveFitTolerance = 0;
+  this->MaximumFitError = this->FitSeconds = 0.0;
   this->NumberOfSheets = this->NumberOfInterpolatedSheets = this->NumberOfFailedSheets = 0;
   this->NumberOfTriangles = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
   this->MaximumDeviation = this->InterpolationSeconds = this->VerificationSeconds = 0.0;
@@ -176,17 +190,19 @@ int vtkSheetInterpolator::RequestData(
   }
   try
   {
-    this->Interpolate(mat, boundary, output);
+    this->Interpolate(mat, boundary, output, fits);
   }
   catch (const InputError& e)
   {
     output->Initialize();
+    fits->Initialize();
     vtkErrorMacro(<< e.what());
     return 0;
   }
   catch (const std::bad_alloc&)
   {
     output->Initialize();
+    fits->Initialize();
     vtkErrorMacro(<< "out of memory: the sheets ask for more than this machine can hold");
     return 0;
   }
@@ -194,11 +210,13 @@ int vtkSheetInterpolator::RequestData(
   return 1;
 }
 
-void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* grid, vtkPolyData* output)
+void vtkSheetInterpolator::Interpolate(
+  vtkPolyData* mat, vtkUnstructuredGrid* grid, vtkPolyData* output, vtkUnstructuredGrid* fits)
 {
   checkParameter("Tolerance", this->Tolerance, 1e-9, 1e-1);
   checkParameter("MaximumEdgeLength", this->MaximumEdgeLength, 1e-4, 1.0);
   checkParameter("VerificationTolerance", this->VerificationTolerance, 0.0, 1.0);
+  checkParameter("FitTolerance", this->FitTolerance, 0.0, 1e-1);
   if (!gridHasSurfaceCells(grid))
     fail("the source holds no surface cells: vtkSheetInterpolator takes the faces of the solid the MAT was "
          "computed from");
@@ -351,6 +369,32 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
         }
     });
   });
+  this->UpdateProgress(0.6);
+  // The B-spline fits (port 1), also independent per sheet.
+  const auto fitStart = std::chrono::steady_clock::now();
+  std::vector<SheetFit> fitted(groups.size());
+  std::vector<std::string> fitErrors(groups.size());
+  if (this->FitSheets)
+  {
+    SheetFitOptions fitOptions;
+    fitOptions.tolerance = this->FitTolerance > 0.0 ? this->FitTolerance : this->Tolerance;
+    withThreads(this->NumberOfThreads, [&]() {
+      smpParallelFor()(groups.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+          if (errors[k].empty() && !filled[k].triangles.empty())
+            try
+            {
+              fitted[k] = fitSheet(filled[k], boundary.diagonal(), fitOptions);
+            }
+            catch (const InputError& e)
+            {
+              fitErrors[k] = e.what();
+            }
+      });
+    });
+    this->WriteFits(fitted, fitErrors, labels, tupleIds, allTuples, fitOptions.tolerance, frame, fits);
+  }
+  this->FitSeconds = secondsSince(fitStart);
   this->UpdateProgress(0.7);
   for (size_t k = 0; k < groups.size(); ++k)
   {
@@ -494,6 +538,75 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     vtkWarningMacro(<< "verification failed: " << outcome.report);
 }
 
+void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const std::vector<std::string>& fitErrors,
+  const std::vector<std::string>& labels, const std::vector<std::vector<int>>& tupleIds, int tuples,
+  double tolerance, const Normalisation& frame, vtkUnstructuredGrid* fits)
+{
+  BoundaryGridBuilder builder;
+  vtkNew<vtkDoubleArray> radius;
+  radius->SetName(arrays::Radius);
+  vtkNew<vtkIntArray> sheetId;
+  sheetId->SetName(arrays::SheetId);
+  vtkNew<vtkDoubleArray> cellError;
+  cellError->SetName(arrays::SheetFitError);
+  vtkNew<vtkDoubleArray> tupleError;
+  tupleError->SetName(arrays::SheetFitError);
+  tupleError->SetNumberOfTuples(tuples);
+  tupleError->Fill(-1.0);
+  for (size_t k = 0; k < fitted.size(); ++k)
+  {
+    if (!fitErrors[k].empty())
+    {
+      ++this->NumberOfSheetsAboveFitTolerance;
+      vtkWarningMacro(<< "sheet " << labels[k] << " not fitted: " << fitErrors[k]);
+      continue;
+    }
+    const SheetFit& fit = fitted[k];
+    if (fit.patches.empty())
+      continue;
+    this->MaximumFitError = std::max(this->MaximumFitError, fit.maxError());
+    if (!fit.withinTolerance)
+    {
+      ++this->NumberOfSheetsAboveFitTolerance;
+      vtkWarningMacro(<< "the B-spline fit of sheet " << labels[k] << " is off by " << fit.maxError()
+                      << " of the size (FitTolerance " << tolerance << ") with " << fit.countS << " x "
+                      << fit.countT << " control points");
+    }
+    for (int s : tupleIds[k])
+      tupleError->SetValue(s, fit.maxError());
+    for (const SheetFitPatch& patch : fit.patches)
+    {
+      // The fit lives in the unit frame; the frame is affine, so mapping the control
+      // points maps the surface exactly.
+      Vec4List net;
+      for (const Vec4& h : patch.centre.homogeneousNet())
+      {
+        const Vec3 x = frame.toUser(h.head<3>());
+        net.emplace_back(x.x(), x.y(), x.z(), 1.0);
+      }
+      builder.addPatch(BezierPatch(patch.centre.degreeU(), patch.centre.degreeV(), net), tupleIds[k].front(),
+        patch.s0, patch.s1, patch.t0, patch.t1);
+      // (addPatch appends the net's points in its order, as the radius coefficients are.)
+      for (double r : patch.radius)
+        radius->InsertNextValue(frame.lengthToUser(r));
+      sheetId->InsertNextValue(tupleIds[k].front());
+      cellError->InsertNextValue(fit.maxError());
+      ++this->NumberOfFitPatches;
+    }
+  }
+  fits->ShallowCopy(builder.grid());
+  if (fits->GetNumberOfPoints() != radius->GetNumberOfTuples())
+    fail("internal error: the fitted patches have ", fits->GetNumberOfPoints(), " control points but ",
+      radius->GetNumberOfTuples(), " radius coefficients");
+  fits->GetPointData()->AddArray(radius);
+  fits->GetPointData()->SetActiveScalars(arrays::Radius);
+  // The builder's entity array is the sheet here: named as the sheets are.
+  fits->GetCellData()->RemoveArray(arrays::FaceId);
+  fits->GetCellData()->AddArray(sheetId);
+  fits->GetCellData()->AddArray(cellError);
+  fits->GetFieldData()->AddArray(tupleError);
+}
+
 VerificationOutcome vtkSheetInterpolator::VerifyPoints(
   const PatchBoundary& exact, const MedialComplex& complex, const Normalisation& frame)
 {
@@ -578,4 +691,8 @@ void vtkSheetInterpolator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "NumberOfSheets: " << this->NumberOfSheets << "\n";
   os << indent << "NumberOfFailedSheets: " << this->NumberOfFailedSheets << "\n";
+  os << indent << "FitSheets: " << this->FitSheets << "\n";
+  os << indent << "FitTolerance: " << this->FitTolerance << "\n";
+  os << indent << "NumberOfFitPatches: " << this->NumberOfFitPatches << "\n";
+  os << indent << "MaximumFitError: " << this->MaximumFitError << "\n";
 }

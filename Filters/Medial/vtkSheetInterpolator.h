@@ -31,6 +31,23 @@
  * and no edge is longer than MaximumEdgeLength. Coplanar faces across smooth edges (a
  * polygon split into triangles) are one side of a sheet.
  *
+ * Output port 1 (FitSheets, default on): the thesis' "rational description to a defined
+ * tolerance" — each interpolated sheet as a cubic B-spline surface of centre and radius,
+ * fitted to the sheet's exact balls (sheets/SheetFit) and handed out as the data
+ * contract's `VTK_BEZIER_QUADRILATERAL` cells (weights 1, `HigherOrderDegrees`), one per
+ * knot-span rectangle the sheet reaches (the sheet is the part inside its triangles'
+ * border; a cell may reach past it by less than its span). Point data `Radius` holds the
+ * radius function's Bézier coefficients, so the cells' own interpolation gives the fitted
+ * radius. Cell data `SheetId`, `ParameterRange` (the cell's knot spans in the sheet's
+ * [0,1]² parameter square) and `SheetFitError` (the sheet's largest error); field data
+ * `SheetFitError` per sheet tuple (−1: not fitted). The error — the larger of the centre's
+ * and the radius's, a fraction of the solid's size — is measured at the sheet's vertices
+ * and at exact balls between them the fit never saw (the triangles' centroids); spans are
+ * halved until it is within FitTolerance (0: Tolerance). A sheet whose fit stays above it
+ * (a cone point at a reflex edge's end is approximated, not represented) is named in a
+ * warning and counted in NumberOfSheetsAboveFitTolerance. vtkMAT25DFilter's exact sheets
+ * are not fitted (port 1 is empty for them).
+ *
  * VerifyOutput (default on) checks every output point — or at most
  * MaximumSheetPointsVerified sheet points, evenly spread, when that is not 0 — against the
  * exact boundary: global distance = Radius, two touchpoints inside a sheet; and checks
@@ -61,6 +78,7 @@ class Boundary3D;
 class PatchBoundary;
 struct MedialComplex;
 struct Normalisation;
+struct SheetFit;
 struct VerificationOutcome;
 }
 
@@ -96,6 +114,14 @@ public:
   vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
   vtkGetMacro(NumberOfThreads, int);
 
+  /// Fit each sheet with a B-spline surface (output port 1).
+  vtkSetMacro(FitSheets, bool);
+  vtkGetMacro(FitSheets, bool);
+  vtkBooleanMacro(FitSheets, bool);
+  /// Largest fit error (centre and radius), a fraction of the solid's size; 0: Tolerance.
+  vtkSetClampMacro(FitTolerance, double, 0.0, 1e-1);
+  vtkGetMacro(FitTolerance, double);
+
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfInterpolatedSheets, int);
   vtkGetMacro(NumberOfFailedSheets, int);
@@ -110,6 +136,12 @@ public:
   /// verification fails.
   vtkGetMacro(MaximumCoverageShortfall, double);
   vtkGetMacro(VerificationPassed, bool);
+  /// The fits: Bézier cells on port 1, the largest error over the sheets (a fraction of the
+  /// size), sheets whose fit stayed above FitTolerance, and the time they took.
+  vtkGetMacro(NumberOfFitPatches, int);
+  vtkGetMacro(MaximumFitError, double);
+  vtkGetMacro(NumberOfSheetsAboveFitTolerance, int);
+  vtkGetMacro(FitSeconds, double);
   vtkGetMacro(MaximumVerifiedError, double);
 
 protected:
@@ -117,13 +149,17 @@ protected:
   ~vtkSheetInterpolator() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkSheetInterpolator(const vtkSheetInterpolator&) = delete;
   void operator=(const vtkSheetInterpolator&) = delete;
 
-  void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output);
+  void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
+  void WriteFits(const std::vector<exactmat::SheetFit>& fitted, const std::vector<std::string>& fitErrors,
+    const std::vector<std::string>& labels, const std::vector<std::vector<int>>& tupleIds, int tuples,
+    double tolerance, const exactmat::Normalisation& frame, vtkUnstructuredGrid* fits);
   void PassExactSheets(vtkPolyData* mat, const exactmat::Boundary3D& boundary,
     const exactmat::MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output);
   exactmat::VerificationOutcome VerifyPoints(const exactmat::PatchBoundary& exact,
@@ -135,6 +171,8 @@ private:
   double VerificationTolerance = 1e-9;
   int MaximumSheetPointsVerified = 0;
   int NumberOfThreads = 0;
+  bool FitSheets = true;
+  double FitTolerance = 0.0;
 
   int NumberOfSheets = 0;
   int NumberOfInterpolatedSheets = 0;
@@ -148,6 +186,10 @@ private:
   double MaximumCoverageShortfall = 0.0;
   bool VerificationPassed = true;
   double MaximumVerifiedError = 0.0;
+  int NumberOfFitPatches = 0;
+  double MaximumFitError = 0.0;
+  int NumberOfSheetsAboveFitTolerance = 0;
+  double FitSeconds = 0.0;
 };
 
 #endif

@@ -15,6 +15,7 @@
 #include <vtkCellData.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
+#include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
@@ -29,6 +30,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 
@@ -76,6 +78,62 @@ double sheetArea(vtkPolyData* out, const std::string& pair = "")
       area += vtkTriangle::TriangleArea(a, b, d);
     }
   return area;
+}
+
+// Every fitted cell on port 1 of a polyhedron's sheets, sampled by VTK's own Bézier
+// interpolation (positions, and the Radius coefficients with the same weights), lies on
+// the bisector of its sheet's two faces with the radius its distance to them: planar
+// sheets with linear radius are held exactly, in the user's frame, past their border too.
+void expectFitsOnBisectors(vtkUnstructuredGrid* solid, vtkSheetInterpolator* sheets)
+{
+  auto* fits = vtkUnstructuredGrid::SafeDownCast(sheets->GetOutputDataObject(1));
+  ASSERT_TRUE(fits);
+  ASSERT_GT(fits->GetNumberOfCells(), 0);
+  EXPECT_EQ(fits->GetNumberOfCells(), sheets->GetNumberOfFitPatches());
+  EXPECT_EQ(sheets->GetNumberOfSheetsAboveFitTolerance(), 0);
+  EXPECT_LE(sheets->GetMaximumFitError(), 1e-10);
+  std::map<std::string, std::pair<Vec3, Vec3>> planes; // FaceId → point, unit normal
+  for (const PatchPiece& face : patchPiecesFromGrid(solid))
+    planes[std::to_string(face.entity)] = { face.patch.evaluate(0.5, 0.5), face.patch.normal(0.5, 0.5) };
+  double bounds[6];
+  solid->GetBounds(bounds);
+  const double size = std::sqrt(std::pow(bounds[1] - bounds[0], 2) + std::pow(bounds[3] - bounds[2], 2) +
+    std::pow(bounds[5] - bounds[4], 2));
+  auto* governors =
+    vtkStringArray::SafeDownCast(sheets->GetOutput()->GetFieldData()->GetAbstractArray(arrays::SheetGovernors));
+  vtkDataArray* sheetId = fits->GetCellData()->GetArray(arrays::SheetId);
+  vtkDataArray* radius = fits->GetPointData()->GetArray(arrays::Radius);
+  vtkDataArray* fitError = fits->GetFieldData()->GetArray(arrays::SheetFitError);
+  ASSERT_TRUE(governors && sheetId && radius && fitError);
+  EXPECT_EQ(fitError->GetNumberOfTuples(), governors->GetNumberOfValues());
+  EXPECT_EQ(radius->GetNumberOfTuples(), fits->GetNumberOfPoints());
+  vtkNew<vtkGenericCell> cell;
+  double worst = 0.0;
+  for (vtkIdType c = 0; c < fits->GetNumberOfCells(); ++c)
+  {
+    ASSERT_EQ(fits->GetCellType(c), VTK_BEZIER_QUADRILATERAL);
+    fits->GetCell(c, cell);
+    const std::string pair = governors->GetValue(static_cast<vtkIdType>(sheetId->GetTuple1(c)));
+    const std::string a = pair.substr(0, pair.find(',')), b = pair.substr(pair.find(',') + 1);
+    ASSERT_TRUE(planes.count(a) && planes.count(b)) << pair;
+    std::vector<double> weights(cell->GetNumberOfPoints());
+    for (double u : { 0.0, 0.25, 0.5, 1.0 })
+      for (double v : { 0.0, 0.6, 1.0 })
+      {
+        double pcoords[3] = { u, v, 0.0 }, x[3];
+        int subId = 0;
+        cell->EvaluateLocation(subId, pcoords, x, weights.data());
+        double r = 0.0;
+        for (vtkIdType k = 0; k < cell->GetNumberOfPoints(); ++k)
+          r += weights[k] * radius->GetTuple1(cell->GetPointId(k));
+        for (const std::string& face : { a, b })
+        {
+          const Vec3 d = Vec3(x[0], x[1], x[2]) - planes[face].first;
+          worst = std::max(worst, std::abs(std::abs(d.dot(planes[face].second)) - std::abs(r)) / size);
+        }
+      }
+  }
+  EXPECT_LE(worst, 1e-10);
 }
 
 vtkSmartPointer<vtkNURBSSource> box()
@@ -134,6 +192,7 @@ TEST(vtkSheetInterpolator, BoxSheetsAreTheClosedForm)
     if (std::abs(sheetArea(out, governors->GetValue(s)) - 2.0) < std::abs(best - 2.0))
       best = sheetArea(out, governors->GetValue(s));
   EXPECT_NEAR(best, 2.0, 1e-12);
+  expectFitsOnBisectors(source->GetOutput(), p.sheets);
 }
 
 TEST(vtkSheetInterpolator, MovedAndScaledBoxGivesTheSameSheets)
@@ -154,6 +213,7 @@ TEST(vtkSheetInterpolator, MovedAndScaledBoxGivesTheSameSheets)
   EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
   EXPECT_NEAR(sheetArea(p.sheets->GetOutput()), 1e6 * sheetArea(reference.sheets->GetOutput()),
     1e-9 * 1e6 * sheetArea(reference.sheets->GetOutput()));
+  expectFitsOnBisectors(vtkUnstructuredGrid::SafeDownCast(moved->GetOutput()), p.sheets);
 }
 
 TEST(vtkSheetInterpolator, PillowSheetsAreCurvedAndVerified)
@@ -175,6 +235,27 @@ TEST(vtkSheetInterpolator, PillowSheetsAreCurvedAndVerified)
   EXPECT_LE(sheets->GetMaximumDeviation(), 1e-3);
   EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-2);
   EXPECT_LE(worstRadiusError(pillow->GetOutput(), sheets->GetOutput(), 50), 1e-9);
+  // The fits (port 1): every sheet within the tolerance, its error per sheet tuple.
+  EXPECT_EQ(sheets->GetNumberOfSheetsAboveFitTolerance(), 0);
+  EXPECT_GT(sheets->GetMaximumFitError(), 0.0);
+  EXPECT_LE(sheets->GetMaximumFitError(), 1e-3);
+  auto* fits = vtkUnstructuredGrid::SafeDownCast(sheets->GetOutputDataObject(1));
+  ASSERT_TRUE(fits);
+  EXPECT_GE(fits->GetNumberOfCells(), 12);
+  vtkDataArray* fitError = fits->GetFieldData()->GetArray(arrays::SheetFitError);
+  ASSERT_TRUE(fitError);
+  int fitted = 0;
+  for (vtkIdType s = 0; s < fitError->GetNumberOfTuples(); ++s)
+    if (fitError->GetTuple1(s) >= 0.0)
+    {
+      ++fitted;
+      EXPECT_LE(fitError->GetTuple1(s), 1e-3);
+    }
+  EXPECT_GE(fitted, 12);
+  // Without FitSheets, port 1 stays empty.
+  sheets->FitSheetsOff();
+  sheets->Update();
+  EXPECT_EQ(vtkUnstructuredGrid::SafeDownCast(sheets->GetOutputDataObject(1))->GetNumberOfCells(), 0);
 }
 
 TEST(vtkSheetInterpolator, NotchedCubeIsCompleteAndExact)
@@ -189,6 +270,10 @@ TEST(vtkSheetInterpolator, NotchedCubeIsCompleteAndExact)
   EXPECT_EQ(p.sheets->GetNumberOfFailedSheets(), 0);
   EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
   EXPECT_LE(worstRadiusError(notched->GetOutput(), p.sheets->GetOutput(), 1), 1e-9);
+  // Its fits: planes, parabolic cylinders and paraboloids exactly, the cones at the reflex
+  // corner refined to the tolerance.
+  EXPECT_EQ(p.sheets->GetNumberOfSheetsAboveFitTolerance(), 0);
+  EXPECT_LE(p.sheets->GetMaximumFitError(), 1e-4);
 }
 
 TEST(vtkSheetInterpolator, NotchedCubeFarFromTheOriginIsComplete)

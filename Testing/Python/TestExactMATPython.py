@@ -386,9 +386,24 @@ class PythonPackage(unittest.TestCase):
         self.assertLessEqual(np.abs(middle[:, 0]).max(), 1.0 + 1e-12)
         self.assertLessEqual(np.abs(middle[:, 2]).max(), 0.5 + 1e-12)
         self.assertEqual(vtk_to_numpy(out.GetFieldData().GetArray("SheetStatus")).tolist(), [1] * 13)
+        # The B-spline fits (port 1): planar sheets with linear radius, held exactly; the
+        # middle sheet's cells at radius 1 in y = 0.
+        fits = sheets.GetOutputDataObject(1)
+        self.assertEqual(fits.GetNumberOfCells(), sheets.GetNumberOfFitPatches())
+        self.assertGreaterEqual(fits.GetNumberOfCells(), 13)
+        self.assertLessEqual(sheets.GetMaximumFitError(), 1e-10)
+        control = vtk_to_numpy(fits.GetPoints().GetData())
+        control_radius = vtk_to_numpy(fits.GetPointData().GetArray("Radius"))
+        middle = []
+        for c in range(fits.GetNumberOfCells()):
+            ids = [fits.GetCell(c).GetPointId(k) for k in range(16)]
+            if np.all(np.abs(control_radius[ids] - 1.0) < 1e-9):
+                middle.extend(ids)
+        self.assertGreaterEqual(len(middle), 16)
+        np.testing.assert_allclose(control[middle, 1], 0.0, atol=1e-9)
 
     def test_sheets_defaults_equal_the_paraview_xml(self):
-        self.check_xml_defaults("SheetInterpolator.xml", "SheetInterpolator", exactmat.vtkSheetInterpolator(), 6)
+        self.check_xml_defaults("SheetInterpolator.xml", "SheetInterpolator", exactmat.vtkSheetInterpolator(), 8)
 
     def test_step_solid_through_the_3d_filter(self):
         # The L prism written by OpenCASCADE as IGES: exact planar faces, the 3D MAT verified.

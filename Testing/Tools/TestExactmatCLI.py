@@ -219,11 +219,27 @@ class ExactmatCLI(unittest.TestCase):
                         self.assertAlmostEqual(x[1], 0.0, places=12)
             self.assertGreater(middle, 0)
             self.assertTrue(os.path.exists(os.path.join(tmp, "box.png")))
-            # Reflex edges, a reflex corner and rims: complete and verified too.
+            # Reflex edges, a reflex corner and rims: complete and verified too; with
+            # --sheet-fit, every sheet's B-spline fit within the tolerance, as Bezier cells.
+            from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
             for shape in ("notched-cube", "stepped-block"):
-                r = run("3d", "--shape", shape, "--sheets", "-o", shape + ".vtp", cwd=tmp)
+                r = run("3d", "--shape", shape, "--sheets", "--sheet-fit", shape + "-fit.vtu",
+                        "-o", shape + ".vtp", cwd=tmp)
                 self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
                 self.assertIn("(0 failed)", r.stdout)
+                self.assertIn("(0 sheet(s) above the tolerance)", r.stdout)
+                m = re.search(r"sheet fits\s+(\d+) Bezier patches.*largest error / size ([-+0-9.eE]+)", r.stdout)
+                self.assertTrue(m, r.stdout)
+                self.assertLessEqual(float(m.group(2)), 1e-4)
+                fit = vtkXMLUnstructuredGridReader()
+                fit.SetFileName(os.path.join(tmp, shape + "-fit.vtu"))
+                fit.Update()
+                self.assertEqual(fit.GetOutput().GetNumberOfCells(), int(m.group(1)))
+                self.assertIsNotNone(fit.GetOutput().GetPointData().GetArray("Radius"))
+                self.assertIsNotNone(fit.GetOutput().GetCellData().GetArray("SheetFitError"))
+            r = run("3d", "--shape", "box", "--sheet-fit", "fit.vtu", cwd=tmp)
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--sheet-fit needs --sheets", r.stderr)
 
     def test_input_alone_picks_2d_or_3d(self):
         # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT. The solid: the box

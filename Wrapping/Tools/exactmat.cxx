@@ -43,6 +43,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <cctype>
@@ -75,8 +76,8 @@ const char* Usage = R"(usage:
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
-              [--max-step H] [--sheets [--sheet-resolution R]] [--png OUT.png]
-              [--shape NAME] [--verify-tolerance V]
+              [--max-step H] [--sheets [--sheet-resolution R] [--sheet-fit FIT.vtu]]
+              [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat batch FILE|FOLDER... [-o DIR] [-j N] [--mode auto|2d|3d|extrude|revolve]
                  [the options of that mode]
   exactmat shapes          list the bundled shapes
@@ -121,6 +122,10 @@ const char* Usage = R"(usage:
                  (--tolerance) of the exact sheets, edges at most R x size (--sheet-resolution,
                  default 0.05); every vertex verified, and the sheets' touchpoints must cover
                  every face (exit 3 when a sheet is missing or incomplete)
+  --sheet-fit FIT.vtu  with --sheets: every sheet as a cubic B-spline surface of centre
+                 and radius fitted to its exact balls, written as Bezier quadrilaterals
+                 (point data Radius, cell data SheetId, SheetFitError), each within T of
+                 the sheet's balls (exit 3 when one is not)
   OUT.vtp defaults to exactmat-3d.vtp
 
   batch: every part file given, and every .vtu/.json/.step/.stp/.iges/.igs file of every
@@ -143,6 +148,7 @@ struct Arguments
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
   bool shapeGiven = false, outputGiven = false;
   bool sheets = false;              ///< 3d: the medial sheets too (vtkSheetInterpolator)
+  std::string sheetFit;             ///< 3d --sheets: where to write the sheets' B-spline fits
   bool sheetResolutionGiven = false;
   int part = 0; ///< solid or face of a STEP/IGES input
   std::string partName; ///< or its name in the file
@@ -264,6 +270,8 @@ Arguments parse(int argc, char* argv[])
     }
     else if (arg == "--sheets")
       a.sheets = true;
+    else if (arg == "--sheet-fit")
+      a.sheetFit = value();
     else if (arg == "-j" || arg == "--threads")
     {
       const char* text = value();
@@ -293,6 +301,8 @@ Arguments parse(int argc, char* argv[])
     else
       usageError("more than one INPUT");
   }
+  if (!a.sheetFit.empty() && !a.sheets)
+    usageError("--sheet-fit needs --sheets (the fits are of the filled sheets)");
   if (a.output.empty())
     a.output = a.command == "batch" ? "exactmat-batch" : "exactmat-" + a.command + ".vtp";
   if (a.command == "3d" && !a.shapeGiven)
@@ -397,9 +407,11 @@ void configure3D(vtkMAT3DFilter* mat, const Arguments& a)
   mat->SetNumberOfThreads(a.threads);
 }
 
-bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors)
+// Any VTK XML writer: binary, its errors (a full disk among them) reported by path.
+template <typename Writer>
+bool writeXML(vtkDataObject* data, const std::string& path, ErrorLine* errors)
 {
-  vtkNew<vtkXMLPolyDataWriter> writer;
+  vtkNew<Writer> writer;
   writer->SetInputData(data);
   writer->SetFileName(path.c_str());
   writer->SetDataModeToBinary();
@@ -414,6 +426,11 @@ bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors
     return false;
   }
   return true;
+}
+
+bool writePolyData(vtkPolyData* data, const std::string& path, ErrorLine* errors)
+{
+  return writeXML<vtkXMLPolyDataWriter>(data, path, errors);
 }
 
 // Progress on long runs: a line on stderr every 10% once a second has passed.
@@ -778,6 +795,7 @@ int run3D(const Arguments& a)
       sheets->SetMaximumEdgeLength(a.sheetResolution);
     sheets->SetVerificationTolerance(mat->GetVerificationTolerance());
     sheets->SetNumberOfThreads(a.threads);
+    sheets->SetFitSheets(!a.sheetFit.empty());
     sheets->AddObserver(vtkCommand::ErrorEvent, errors);
     sheets->AddObserver(vtkCommand::WarningEvent, warnings);
     vtkNew<ProgressLine> sheetProgress;
@@ -790,7 +808,11 @@ int run3D(const Arguments& a)
   }
   if (!writePolyData(out, a.output, errors))
     return ExitOutputError;
-  const bool passed = mat->GetVerificationPassed() && (!a.sheets || sheets->GetVerificationPassed());
+  const bool fitted = a.sheets && !a.sheetFit.empty();
+  if (fitted && !writeXML<vtkXMLUnstructuredGridWriter>(sheets->GetOutputDataObject(1), a.sheetFit, errors))
+    return ExitOutputError;
+  const bool passed = mat->GetVerificationPassed() && (!a.sheets || sheets->GetVerificationPassed()) &&
+    (!fitted || sheets->GetNumberOfSheetsAboveFitTolerance() == 0);
   const exactmat::Boundary3D b = exactmat::buildNormalised(exactmat::patchPiecesFromGrid(solid));
   std::printf("ExactMAT 3D medial axis transform (seams and junctions) of %s\n", label.c_str());
   std::printf("  boundary            %zu faces, %d convex / %d reflex / %d smooth edges, %d convex / %d reflex "
@@ -823,8 +845,15 @@ int run3D(const Arguments& a)
       sheets->GetNumberOfVerifiedPoints(), sheets->GetMaximumVerifiedError(),
       sheets->GetNumberOfTouchpointMismatches(), sheets->GetMaximumCoverageShortfall());
   }
+  if (fitted)
+    std::printf("  sheet fits          %d Bezier patches in %.2f ms, largest error / size %.3g at the sheets' "
+                "exact balls (%d sheet(s) above the tolerance)\n",
+      sheets->GetNumberOfFitPatches(), 1e3 * sheets->GetFitSeconds(), sheets->GetMaximumFitError(),
+      sheets->GetNumberOfSheetsAboveFitTolerance());
   std::printf("  verification        %s\n", passed ? "passed" : "FAILED");
   std::printf("  wrote               %s\n", a.output.c_str());
+  if (fitted)
+    std::printf("  wrote               %s\n", a.sheetFit.c_str());
   if (!a.png.empty())
   {
     std::string error;
