@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace exactmat
@@ -137,6 +138,9 @@ SheetFit fitSheet(const MedialSheetMesh& mesh, double size, const SheetFitOption
 
   std::set<double> interiorS, interiorT;
   const double tolerance = options.tolerance * size;
+  SheetFit best = fit;
+  best.vertexError = best.checkError = Unbounded;
+  std::set<double> bestS, bestT;
   for (int round = 0; round < 24; ++round)
   {
     fit.rounds = round + 1;
@@ -214,8 +218,9 @@ SheetFit fitSheet(const MedialSheetMesh& mesh, double size, const SheetFitOption
       fit.centres[k] = net.row(k).head<3>().transpose();
       fit.radii[k] = net(k, 3);
     }
-    // Errors, and the spans of the points off by more than the tolerance.
-    std::set<std::pair<double, double>> badS, badT;
+    // Errors, and the cells (span pairs) of the points off by more than the tolerance.
+    using Span = std::pair<double, double>;
+    std::set<std::pair<Span, Span>> bad;
     auto measure = [&](const std::vector<Sample>& samples) {
       double worst = 0.0;
       for (const Sample& d : samples)
@@ -226,29 +231,50 @@ SheetFit fitSheet(const MedialSheetMesh& mesh, double size, const SheetFitOption
         const double e = std::max((x - d.x).norm(), std::abs(r - d.r));
         worst = std::max(worst, e);
         if (e > tolerance)
-        {
-          badS.insert(spanOf(interiorS, d.st.x()));
-          badT.insert(spanOf(interiorT, d.st.y()));
-        }
+          bad.insert({ spanOf(interiorS, d.st.x()), spanOf(interiorT, d.st.y()) });
       }
       return worst / size;
     };
     fit.vertexError = measure(data);
     fit.checkError = measure(checks);
     fit.withinTolerance = fit.maxError() <= options.tolerance;
+    // More spans than the sheet's vertices can fix only fit the vertices better and the
+    // surface between them worse: the best round is kept.
+    if (fit.maxError() < best.maxError())
+    {
+      best = fit;
+      bestS = interiorS;
+      bestT = interiorT;
+    }
     if (fit.withinTolerance)
       break;
-    // Halve the offending spans (each direction up to maxSpans spans).
+    // Halve the offending spans (each direction up to maxSpans spans) where a cell holds
+    // enough vertices to fix the control points a split adds.
+    std::map<std::pair<Span, Span>, int> count;
+    for (const Sample& d : data)
+    {
+      const auto cell = std::make_pair(spanOf(interiorS, d.st.x()), spanOf(interiorT, d.st.y()));
+      if (bad.count(cell))
+        ++count[cell];
+    }
     bool refined = false;
-    for (const auto& [a, b] : badS)
+    for (const auto& [cell, n] : count)
+    {
+      if (n < 4 * (p + 1))
+        continue;
       if (static_cast<int>(interiorS.size()) + 1 < options.maxSpans)
-        refined = interiorS.insert(0.5 * (a + b)).second || refined;
-    for (const auto& [a, b] : badT)
+        refined = interiorS.insert(0.5 * (cell.first.first + cell.first.second)).second || refined;
       if (static_cast<int>(interiorT.size()) + 1 < options.maxSpans)
-        refined = interiorT.insert(0.5 * (a + b)).second || refined;
+        refined = interiorT.insert(0.5 * (cell.second.first + cell.second.second)).second || refined;
+    }
     if (!refined)
       break;
   }
+  const int rounds = fit.rounds;
+  fit = std::move(best);
+  fit.rounds = rounds;
+  interiorS = std::move(bestS);
+  interiorT = std::move(bestT);
 
   // The span rectangles the triangles reach, as Bézier patches.
   const int spansS = static_cast<int>(interiorS.size()) + 1, spansT = static_cast<int>(interiorT.size()) + 1;

@@ -13,8 +13,13 @@
 /// data, so a planar sheet with a linear radius is fitted exactly. The error is measured at
 /// the vertices and at the exact balls at the triangles' centroids
 /// (MedialSheetMesh::checkPoints), which the fit never sees: how the surface does between
-/// the vertices. Every knot span holding a point off by more than the tolerance is halved
-/// and the fit repeated, up to `maxSpans` spans per direction.
+/// the vertices. Every knot-span cell holding a point off by more than the tolerance, and
+/// enough vertices (4(p + 1)) to fix the control points a split adds, is halved in both
+/// directions and the fit repeated, up to `maxSpans` spans per direction; the round with
+/// the smallest error is kept (spans the vertices cannot fix would only fit the vertices
+/// better and the surface between them worse). So the fit is as good as the sheet's
+/// vertices allow: a fit tolerance far below the sheet's own interpolation tolerance may
+/// not be reached, and says so (withinTolerance).
 ///
 /// The surface covers the domain's bounding box; the sheet is the part inside its border
 /// loops (the triangles). Only the knot-span rectangles some triangle reaches are returned
@@ -63,7 +68,7 @@ struct SheetFit
   double checkError = 0.0;    ///< largest error at the check points (not fitted), fraction of the size
   double maxError() const { return std::max(vertexError, checkError); }
   bool withinTolerance = false;
-  int rounds = 0;
+  int rounds = 0;             ///< fits tried (the one with the smallest error is kept)
 
   Vec2 parameterOf(const Vec2& domain) const;
   /// Centre and radius at (s, t) ∈ [0,1]².
