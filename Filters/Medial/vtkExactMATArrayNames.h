@@ -44,7 +44,10 @@
  * `SheetStatus` (int per tuple: 1 interpolated, 0 empty, −1 failed) and `SheetMessage`.
  * Its second output (the sheets' B-spline fits as Bézier cells) has point data `Radius`
  * (the radius's Bézier coefficients), cell data `SheetId` and `SheetFitError` (the sheet's
- * largest fit error / size), and `SheetFitError` per sheet tuple as field data (−1: none).
+ * largest fit error / size), and `SheetFitError` per sheet tuple as field data (−1: none);
+ * the sheets' trimming loops as field data: `SheetTrimLoops` (double, 2 components: every
+ * loop's (s, t) points, loop after loop), `SheetTrimLoopOffsets` (int: where each loop
+ * starts, and the total last) and `SheetTrimLoopSheet` (int: each loop's SheetId).
  *
  * Verification (field data of every MAT output, when VerifyOutput is on):
  * `VerificationStatus` (int: 1 passed, 0 failed — the filter also warns —, −1 not run),
@@ -88,6 +91,9 @@ constexpr const char* SheetId = "SheetId";
 constexpr const char* SheetStatus = "SheetStatus";
 constexpr const char* SheetMessage = "SheetMessage";
 constexpr const char* SheetFitError = "SheetFitError";
+constexpr const char* SheetTrimLoops = "SheetTrimLoops";
+constexpr const char* SheetTrimLoopOffsets = "SheetTrimLoopOffsets";
+constexpr const char* SheetTrimLoopSheet = "SheetTrimLoopSheet";
 constexpr const char* VerificationStatus = "VerificationStatus";
 constexpr const char* MaximumVerifiedError = "MaximumVerifiedError";
 constexpr const char* VerificationReport = "VerificationReport";

@@ -553,6 +553,13 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
   tupleError->SetName(arrays::SheetFitError);
   tupleError->SetNumberOfTuples(tuples);
   tupleError->Fill(-1.0);
+  vtkNew<vtkDoubleArray> trimLoops;
+  trimLoops->SetName(arrays::SheetTrimLoops);
+  trimLoops->SetNumberOfComponents(2);
+  vtkNew<vtkIntArray> trimOffsets;
+  trimOffsets->SetName(arrays::SheetTrimLoopOffsets);
+  vtkNew<vtkIntArray> trimSheet;
+  trimSheet->SetName(arrays::SheetTrimLoopSheet);
   for (size_t k = 0; k < fitted.size(); ++k)
   {
     if (!fitErrors[k].empty())
@@ -574,6 +581,13 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
     }
     for (int s : tupleIds[k])
       tupleError->SetValue(s, fit.maxError());
+    for (const std::vector<Vec2>& loop : fit.trimLoops)
+    {
+      trimOffsets->InsertNextValue(static_cast<int>(trimLoops->GetNumberOfTuples()));
+      trimSheet->InsertNextValue(tupleIds[k].front());
+      for (const Vec2& st : loop)
+        trimLoops->InsertNextTuple2(st.x(), st.y());
+    }
     for (const SheetFitPatch& patch : fit.patches)
     {
       // The fit lives in the unit frame; the frame is affine, so mapping the control
@@ -605,6 +619,10 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
   fits->GetCellData()->AddArray(sheetId);
   fits->GetCellData()->AddArray(cellError);
   fits->GetFieldData()->AddArray(tupleError);
+  trimOffsets->InsertNextValue(static_cast<int>(trimLoops->GetNumberOfTuples()));
+  fits->GetFieldData()->AddArray(trimLoops);
+  fits->GetFieldData()->AddArray(trimOffsets);
+  fits->GetFieldData()->AddArray(trimSheet);
 }
 
 VerificationOutcome vtkSheetInterpolator::VerifyPoints(

@@ -36,11 +36,14 @@
  * fitted to the sheet's exact balls (sheets/SheetFit) and handed out as the data
  * contract's `VTK_BEZIER_QUADRILATERAL` cells (weights 1, `HigherOrderDegrees`), one per
  * knot-span rectangle the sheet reaches (the sheet is the part inside its triangles'
- * border; a cell may reach past it by less than its span). Point data `Radius` holds the
+ * border loops, given as trimming loops; a cell may reach past them by less than its span).
+ * Point data `Radius` holds the
  * radius function's Bézier coefficients, so the cells' own interpolation gives the fitted
  * radius. Cell data `SheetId`, `ParameterRange` (the cell's knot spans in the sheet's
  * [0,1]² parameter square) and `SheetFitError` (the sheet's largest error); field data
- * `SheetFitError` per sheet tuple (−1: not fitted). The error — the larger of the centre's
+ * `SheetFitError` per sheet tuple (−1: not fitted) and the trimming: the sheets' border
+ * loops in (s, t) (`SheetTrimLoops`, `SheetTrimLoopOffsets`, `SheetTrimLoopSheet`; the
+ * sheet is the part inside its outer loop and outside its holes). The error — the larger of the centre's
  * and the radius's, a fraction of the solid's size — is measured at the sheet's vertices
  * and at exact balls between them the fit never saw (the triangles' centroids); spans are
  * halved until it is within FitTolerance (0: Tolerance). A sheet whose fit stays above it

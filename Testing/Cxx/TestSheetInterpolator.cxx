@@ -134,6 +134,45 @@ void expectFitsOnBisectors(vtkUnstructuredGrid* solid, vtkSheetInterpolator* she
       }
   }
   EXPECT_LE(worst, 1e-10);
+  // The trimming loops: each point, evaluated on the cell of its sheet whose ParameterRange
+  // holds it, is a medial ball of the polyhedron (the nearest face at its radius).
+  vtkDataArray* loops = fits->GetFieldData()->GetArray(arrays::SheetTrimLoops);
+  vtkDataArray* offsets = fits->GetFieldData()->GetArray(arrays::SheetTrimLoopOffsets);
+  vtkDataArray* loopSheet = fits->GetFieldData()->GetArray(arrays::SheetTrimLoopSheet);
+  vtkDataArray* ranges = fits->GetCellData()->GetArray(arrays::ParameterRange);
+  ASSERT_TRUE(loops && offsets && loopSheet && ranges);
+  ASSERT_EQ(offsets->GetNumberOfTuples(), loopSheet->GetNumberOfTuples() + 1);
+  EXPECT_EQ(offsets->GetTuple1(offsets->GetNumberOfTuples() - 1), loops->GetNumberOfTuples());
+  double worstMedial = 0.0;
+  int evaluated = 0;
+  for (vtkIdType l = 0; l < loopSheet->GetNumberOfTuples(); ++l)
+    for (auto k = static_cast<vtkIdType>(offsets->GetTuple1(l)); k < offsets->GetTuple1(l + 1); ++k)
+    {
+      const double s = loops->GetComponent(k, 0), t = loops->GetComponent(k, 1);
+      for (vtkIdType c = 0; c < fits->GetNumberOfCells(); ++c)
+      {
+        const double* range = ranges->GetTuple4(c);
+        if (sheetId->GetTuple1(c) != loopSheet->GetTuple1(l) || s < range[0] - 1e-12 || s > range[1] + 1e-12 ||
+          t < range[2] - 1e-12 || t > range[3] + 1e-12)
+          continue;
+        fits->GetCell(c, cell);
+        std::vector<double> weights(cell->GetNumberOfPoints());
+        double pcoords[3] = { (s - range[0]) / (range[1] - range[0]), (t - range[2]) / (range[3] - range[2]), 0.0 };
+        double x[3], r = 0.0;
+        int subId = 0;
+        cell->EvaluateLocation(subId, pcoords, x, weights.data());
+        for (vtkIdType p = 0; p < cell->GetNumberOfPoints(); ++p)
+          r += weights[p] * radius->GetTuple1(cell->GetPointId(p));
+        double nearest = 1e300;
+        for (const auto& [label, plane] : planes)
+          nearest = std::min(nearest, std::abs((Vec3(x[0], x[1], x[2]) - plane.first).dot(plane.second)));
+        worstMedial = std::max(worstMedial, std::abs(nearest - r) / size);
+        ++evaluated;
+        break;
+      }
+    }
+  EXPECT_EQ(evaluated, loops->GetNumberOfTuples());
+  EXPECT_LE(worstMedial, 1e-10);
 }
 
 vtkSmartPointer<vtkNURBSSource> box()

@@ -75,6 +75,41 @@ void expectFitsWithin(const Fitted& f, double tolerance, const std::string& what
       fit.evaluate(fit.parameterOf(mesh.checkPoints[i].domain), x, r);
       EXPECT_NEAR(exact.distance(x), r, 2.0 * tolerance * size) << what;
     }
+    // The trimming loops: the border vertices, in order, at the fitted surface; every
+    // triangle of the sheet inside them (even-odd over the loops: outer loop and holes).
+    ASSERT_EQ(static_cast<int>(fit.trimLoops.size()), mesh.loops) << what;
+    size_t first = 0;
+    std::vector<Vec2> edgesFrom, edgesTo;
+    for (const std::vector<Vec2>& loop : fit.trimLoops)
+    {
+      for (size_t k = 0; k < loop.size(); ++k)
+      {
+        EXPECT_TRUE(loop[k].minCoeff() >= -1e-12 && loop[k].maxCoeff() <= 1.0 + 1e-12) << what;
+        Vec3 x;
+        double r;
+        fit.evaluate(loop[k], x, r);
+        EXPECT_LE((x - mesh.vertices[first + k].x).norm(), (fit.vertexError + 1e-14) * size) << what;
+        edgesFrom.push_back(loop[k]);
+        edgesTo.push_back(loop[(k + 1) % loop.size()]);
+      }
+      first += loop.size();
+    }
+    int outside = 0;
+    for (const auto& tri : mesh.triangles)
+    {
+      const Vec2 c = fit.parameterOf(
+        (mesh.vertices[tri[0]].domain + mesh.vertices[tri[1]].domain + mesh.vertices[tri[2]].domain) / 3.0);
+      bool inside = false;
+      for (size_t e = 0; e < edgesFrom.size(); ++e)
+      {
+        const Vec2 a = edgesFrom[e], b = edgesTo[e];
+        if ((a.y() > c.y()) != (b.y() > c.y()) &&
+          c.x() < a.x() + (c.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+          inside = !inside;
+      }
+      outside += inside ? 0 : 1;
+    }
+    EXPECT_EQ(outside, 0) << what << ": triangles outside the trimming loops";
     ASSERT_FALSE(fit.patches.empty()) << what;
     for (const SheetFitPatch& patch : fit.patches)
       for (double u : { 0.0, 0.3, 1.0 })

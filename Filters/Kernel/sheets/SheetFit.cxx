@@ -276,6 +276,17 @@ SheetFit fitSheet(const MedialSheetMesh& mesh, double size, const SheetFitOption
   interiorS = std::move(bestS);
   interiorT = std::move(bestT);
 
+  // The trimming loops: the border loops' vertices, in the fit's parameters.
+  size_t first = 0;
+  for (int n : mesh.loopSizes)
+  {
+    std::vector<Vec2> loop;
+    for (size_t v = first; v < first + n && v < mesh.vertices.size(); ++v)
+      loop.push_back(fit.parameterOf(mesh.vertices[v].domain));
+    first += n;
+    fit.trimLoops.push_back(std::move(loop));
+  }
+
   // The span rectangles the triangles reach, as Bézier patches.
   const int spansS = static_cast<int>(interiorS.size()) + 1, spansT = static_cast<int>(interiorT.size()) + 1;
   std::vector<double> breaksS{ 0.0 }, breaksT{ 0.0 };

@@ -22,8 +22,9 @@
 /// not be reached, and says so (withinTolerance).
 ///
 /// The surface covers the domain's bounding box; the sheet is the part inside its border
-/// loops (the triangles). Only the knot-span rectangles some triangle reaches are returned
-/// as Bézier patches; they may reach past the border by less than one span.
+/// loops (the triangles), returned as trimming loops in the surface's parameters. Only the
+/// knot-span rectangles some triangle reaches are returned as Bézier patches; they may
+/// reach past the border by less than one span.
 
 #include "nurbs/BezierPatch.h"
 #include "nurbs/KnotVector.h"
@@ -61,6 +62,9 @@ struct SheetFit
   std::vector<double> radii;   ///< the radius's control values, same layout
   Vec2 domainOrigin = Vec2::Zero(), domainExtent = Vec2::Ones(); ///< s = (domain − origin) / extent
   std::vector<SheetFitPatch> patches; ///< the span rectangles the sheet's triangles reach
+  /// The sheet's border loops (MedialSheetMesh::loopSizes) in (s, t): the trimming of the
+  /// surface — the sheet is the part of [0,1]² inside the outer loop and outside the holes.
+  std::vector<std::vector<Vec2>> trimLoops;
 
   int fittedPoints = 0;       ///< vertices the fit was computed from
   int checkedPoints = 0;      ///< check points it was measured at as well

@@ -901,6 +901,8 @@ private:
       }
     }
     Mesh.loops = static_cast<int>(loops.size());
+    for (const auto& loop : loops)
+      Mesh.loopSizes.push_back(static_cast<int>(loop.size()));
     std::unique_ptr<DomainTriangulation> t;
     try
     {

@@ -73,6 +73,9 @@ struct MedialSheetMesh
   std::vector<SheetVertex> vertices;
   std::vector<std::array<int, 3>> triangles;
   int loops = 0;            ///< border loops (1 + holes, or several pieces)
+  /// The border loops' vertex counts: the first loopSizes[0] vertices are the first loop in
+  /// order (closed: the last joins the first), the next loopSizes[1] the second, …
+  std::vector<int> loopSizes;
   int gapVertices = 0;      ///< border vertices solved along a side of P's domain
   double maxDeviation = 0.0; ///< largest centroid deviation of the final triangles, fraction of the size
   /// The exact balls at the domain centroids of the final triangles (where they solve):
