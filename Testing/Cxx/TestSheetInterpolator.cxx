@@ -421,6 +421,9 @@ TEST(vtkSheetInterpolator, RevolvedSolidsSheetsPassThroughVerified)
   EXPECT_TRUE(passed->GetVerificationPassed());
   EXPECT_GT(passed->GetNumberOfSheets(), 0);
   EXPECT_GT(passed->GetNumberOfVerifiedPoints(), 300);
+  // Exact sheets are not fitted: port 1 is empty.
+  EXPECT_EQ(vtkUnstructuredGrid::SafeDownCast(passed->GetOutputDataObject(1))->GetNumberOfCells(), 0);
+  EXPECT_EQ(passed->GetNumberOfFitPatches(), 0);
   // The wrong solid as the source (the profile extruded, not revolved): the sheets' balls
   // are not medial in it, and the verification says so.
   vtkNew<vtkNURBSSource> wrong;
