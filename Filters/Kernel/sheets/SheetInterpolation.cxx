@@ -830,10 +830,14 @@ private:
     return out;
   }
 
-  // Appends the points strictly between a and b that the border edge needs.
+  // Appends the points strictly between a and b that the border edge needs. An edge
+  // between two points of the given curves is a seam's own segment (within the seam's
+  // tolerance of the sheet, no longer than its step): kept whole, so the sheets and the
+  // seams they share form a conforming complex (a point inserted there would be a
+  // T-junction with the seam's polyline).
   void split(const SheetVertex& a, const SheetVertex& b, int depth, std::vector<SheetVertex>& out) const
   {
-    if (depth > 16)
+    if (depth > 16 || (a.source >= 0 && b.source >= 0))
       return;
     SheetVertex m = a;
     m.r = 0.5 * (a.r + b.r);
