@@ -15,8 +15,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 using namespace exactmat;
 
@@ -79,7 +81,109 @@ void expectExactSheets(const Sheets& s, const std::string& what, double coverage
     EXPECT_LE(c.shortfall(), coverage) << what << ": face " << c.face << " covered " << c.covered << " of " << c.area;
 }
 
+// The generalised winding number of the closed, outward-oriented faces at p (each face a
+// fan of n × n parameter cells, two triangles each): 1 inside, 0 outside, robust away from
+// the boundary.
+double windingNumber(const Boundary3D& b, const Vec3& p, int n = 8)
+{
+  double sum = 0.0;
+  for (const Face3D& face : b.faces())
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+      {
+        const Vec3 c00 = face.patch.evaluate(double(i) / n, double(j) / n) - p;
+        const Vec3 c10 = face.patch.evaluate(double(i + 1) / n, double(j) / n) - p;
+        const Vec3 c11 = face.patch.evaluate(double(i + 1) / n, double(j + 1) / n) - p;
+        const Vec3 c01 = face.patch.evaluate(double(i) / n, double(j + 1) / n) - p;
+        for (const auto& [a, bb, c] : { std::tuple<Vec3, Vec3, Vec3>{ c00, c10, c11 }, { c00, c11, c01 } })
+        {
+          const double la = a.norm(), lb = bb.norm(), lc = c.norm();
+          sum += 2.0 * std::atan2(a.dot(bb.cross(c)), la * lb * lc + a.dot(bb) * lc + a.dot(c) * lb + bb.dot(c) * la);
+        }
+      }
+  return sum / (4.0 * M_PI);
+}
+
+// Completeness of the whole MAT as a union of balls (the check, independent of the
+// face coverage): the fraction of a grid of points inside the solid (farther than 1e-3 of
+// the size from its boundary) that lie in a ball of the MAT — a seam's ball, or a ball
+// interpolated (centre and radius) over a sheet triangle, sampled at barycentric steps of 1/6.
+double ballCoverage(const Sheets& s, int grid)
+{
+  const Boundary3D& b = *s.boundary;
+  const PatchBoundary exact(b);
+  const double size = b.diagonal();
+  Box3 box;
+  for (const Face3D& f : b.faces())
+    box.extend(f.patch.boundingBox());
+  struct Piece
+  {
+    std::array<Vec3, 3> x;
+    std::array<double, 3> r;
+    Vec3 centre;
+    double reach;
+  };
+  std::vector<Piece> pieces;
+  auto add = [&pieces](const std::array<Vec3, 3>& x, const std::array<double, 3>& r) {
+    Piece piece{ x, r, (x[0] + x[1] + x[2]) / 3.0, 0.0 };
+    for (int k = 0; k < 3; ++k)
+      piece.reach = std::max(piece.reach, (x[k] - piece.centre).norm() + r[k]);
+    pieces.push_back(piece);
+  };
+  for (const MedialSheetMesh& m : s.meshes)
+    for (const auto& t : m.triangles)
+      add({ { m.vertices[t[0]].x, m.vertices[t[1]].x, m.vertices[t[2]].x } },
+        { { m.vertices[t[0]].r, m.vertices[t[1]].r, m.vertices[t[2]].r } });
+  for (const MAT3DSeam& seam : s.mat.seams)
+    for (const MedialBall3D& ball : seam.balls)
+      add({ { ball.x, ball.x, ball.x } }, { { ball.r, ball.r, ball.r } });
+  int inside = 0, covered = 0;
+  for (int i = 0; i < grid; ++i)
+    for (int j = 0; j < grid; ++j)
+      for (int k = 0; k < grid; ++k)
+      {
+        // (Offsets off the grid's symmetry: no sample exactly on a sheet of a symmetric solid.)
+        const Vec3 f((i + 0.5 + 0.0137 * k) / grid, (j + 0.5 + 0.0291 * i) / grid, (k + 0.5 + 0.0173 * j) / grid);
+        const Vec3 p = box.min() + f.cwiseProduct(box.max() - box.min());
+        if (exact.distance(p) <= 1e-3 * size || windingNumber(b, p) < 0.5)
+          continue;
+        ++inside;
+        bool in = false;
+        for (size_t q = 0; q < pieces.size() && !in; ++q)
+        {
+          const Piece& piece = pieces[q];
+          if ((p - piece.centre).norm() > piece.reach)
+            continue;
+          for (int a = 0; a <= 6 && !in; ++a)
+            for (int c = 0; a + c <= 6 && !in; ++c)
+            {
+              const double la = a / 6.0, lc = c / 6.0, lb = 1.0 - la - lc;
+              const Vec3 x = la * piece.x[0] + lb * piece.x[1] + lc * piece.x[2];
+              in = (p - x).norm() <= la * piece.r[0] + lb * piece.r[1] + lc * piece.r[2];
+            }
+        }
+        covered += in ? 1 : 0;
+      }
+  EXPECT_GT(inside, grid * grid * grid / 10);
+  return static_cast<double>(covered) / std::max(inside, 1);
+}
+
 } // namespace
+
+TEST(Sheets, TheBallsFillTheSolid)
+{
+  // Every interior point lies in a maximal ball, so the MAT's balls — the seams' and the
+  // sheets', interpolated over the triangles — fill the solid (the interpolation is within
+  // the tolerance of the exact balls, hence the 99.9 %).
+  for (const auto& [name, pieces] :
+    { std::pair<std::string, std::vector<PatchPiece>>{ "box", boxPolyhedron(2.0, 1.5, 1.0) },
+      { "L prism", lPrism(1.0, 2.5) }, { "notched cube", patchPieces(makeShape("notched-cube").surfaces) },
+      { "pillow", patchPieces(makeShape("pillow").surfaces) } })
+  {
+    const Sheets s = sheetsOf(pieces);
+    EXPECT_GE(ballCoverage(s, 16), 0.999) << name;
+  }
+}
 
 TEST(Sheets, BoxSheetsAreTheClosedForm)
 {
