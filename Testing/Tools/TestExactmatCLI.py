@@ -156,7 +156,7 @@ class ExactmatCLI(unittest.TestCase):
             # (+, +, +) eighth cut away). The seam up the diagonal from (-2, -2, -2) meets
             # the reflex corner at the origin where sqrt(3) (2 - r) = r: radius
             # k = 2 sqrt(3) / (1 + sqrt(3)), centre (-2 + k) (1, 1, 1).
-            r = run("3d", "--shape", "notched-cube", "-o", "notch.vtp", cwd=tmp)
+            r = run("3d", "--shape", "notched-cube", "--no-sheets", "-o", "notch.vtp", cwd=tmp)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("3 reflex", r.stdout)
             self.assertEqual(summary_value(r.stdout, "junctions"), 7)
@@ -174,7 +174,7 @@ class ExactmatCLI(unittest.TestCase):
             for c in x:
                 self.assertAlmostEqual(c, -2.0 + k, places=9)
             # The thesis' fixed steps: the same junctions, many more points.
-            r2 = run("3d", "--shape", "notched-cube", "--step", "2e-3", "-o", "notch-fixed.vtp", cwd=tmp)
+            r2 = run("3d", "--shape", "notched-cube", "--no-sheets", "--step", "2e-3", "-o", "notch-fixed.vtp", cwd=tmp)
             self.assertEqual(r2.returncode, 0, r2.stderr)
             self.assertEqual(summary_value(r2.stdout, "junctions"), 7)
             self.assertGreater(summary_value(r2.stdout, "points"), 2 * summary_value(r.stdout, "points"))
@@ -187,7 +187,7 @@ class ExactmatCLI(unittest.TestCase):
             self.assertIn("no surface cells", r.stderr)
 
     def test_3d_sheets(self):
-        # The catalogue box 4 x 2 x 3 with --sheets: 13 planar sheets sharing the seams'
+        # The catalogue box 4 x 2 x 3 with its sheets: 13 planar sheets sharing the seams'
         # points, every point verified, the faces covered; the middle sheet (between the
         # faces 2 apart) is the rectangle |x| <= 1, |z| <= 0.5 at radius 1.
         with tempfile.TemporaryDirectory() as tmp:
@@ -237,9 +237,19 @@ class ExactmatCLI(unittest.TestCase):
                 self.assertEqual(fit.GetOutput().GetNumberOfCells(), int(m.group(1)))
                 self.assertIsNotNone(fit.GetOutput().GetPointData().GetArray("Radius"))
                 self.assertIsNotNone(fit.GetOutput().GetCellData().GetArray("SheetFitError"))
-            r = run("3d", "--shape", "box", "--sheet-fit", "fit.vtu", cwd=tmp)
+            r = run("3d", "--shape", "box", "--no-sheets", "--sheet-fit", "fit.vtu", cwd=tmp)
             self.assertEqual(r.returncode, 2)
-            self.assertIn("--sheet-fit needs --sheets", r.stderr)
+            self.assertIn("--sheet-fit needs the sheets", r.stderr)
+            # The sheets are the default; --no-sheets leaves the seam graph alone.
+            r = run("3d", "--shape", "box", "-o", "default.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertIn("13 filled (0 failed)", r.stdout)
+            r = run("3d", "--shape", "box", "--no-sheets", "-o", "seams.vtp", cwd=tmp)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertIn("not filled: --no-sheets", r.stdout)
+            reader.SetFileName(os.path.join(tmp, "seams.vtp"))
+            reader.Update()
+            self.assertEqual(reader.GetOutput().GetNumberOfPolys(), 0)
 
     def test_input_alone_picks_2d_or_3d(self):
         # `exactmat INPUT`: faces make it the 3D MAT, curves the 2D MAT. The solid: the box

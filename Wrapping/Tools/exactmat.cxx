@@ -76,7 +76,7 @@ const char* Usage = R"(usage:
   exactmat revolve [PROFILE] [--angle DEG] [--axis PX,PY,PZ[,DX,DY,DZ]] [-o OUT.vtp]
                    [--png OUT.png] [--shape NAME] [--sheet-resolution R] [...]
   exactmat 3d [SOLID] [-o OUT.vtp] [--tolerance T | --step S [--branch-step B]]
-              [--max-step H] [--sheets [--sheet-resolution R] [--sheet-fit FIT.vtu]]
+              [--max-step H] [--no-sheets | --sheet-resolution R] [--sheet-fit FIT.vtu]
               [--png OUT.png] [--shape NAME] [--verify-tolerance V]
   exactmat batch FILE|FOLDER... [-o DIR] [-j N] [--mode auto|2d|3d|extrude|revolve]
                  [the options of that mode]
@@ -110,19 +110,19 @@ const char* Usage = R"(usage:
   --sheet-resolution R  sheet vertex spacing, fraction of the solid's size (default 0.02)
   OUT.vtp defaults to exactmat-extrude.vtp / exactmat-revolve.vtp
 
-  3d: the seams and junctions of the MAT of a solid bounded by exact faces (SOLID: a .vtu
-  of Bezier quadrilaterals/triangles or planar quads/triangles, ExactMAT .json
-  surfaces, or a solid of a .step/.stp/.iges/.igs file; default: the bundled free-form
-  shape pillow, or --shape NAME)
-  --tolerance T  seam polylines within T x solid size of the seams (default 1e-4)
+  3d: the MAT of a solid bounded by exact faces — seams, junctions, rims and the medial
+  sheets (SOLID: a .vtu of Bezier quadrilaterals/triangles or planar quads/triangles,
+  ExactMAT .json surfaces, or a solid of a .step/.stp/.iges/.igs file; default: the
+  bundled free-form shape pillow, or --shape NAME). The sheets are triangles
+  (vtkSheetInterpolator) within T (--tolerance) of the exact sheets, edges at most R x
+  size (--sheet-resolution, default 0.05); every vertex is verified, and the sheets'
+  touchpoints must cover every face (exit 3 when a sheet is missing or incomplete).
+  --tolerance T  seam polylines (and sheet triangles) within T x solid size (default 1e-4)
   --max-step H   longest step along a seam, fraction of the size (default 0.05)
   --step S       fixed steps of S x solid size along the seams, as in the thesis (junction
                  check every B, default 10 S)
-  --sheets       the medial sheets too, as triangles (vtkSheetInterpolator): within T
-                 (--tolerance) of the exact sheets, edges at most R x size (--sheet-resolution,
-                 default 0.05); every vertex verified, and the sheets' touchpoints must cover
-                 every face (exit 3 when a sheet is missing or incomplete)
-  --sheet-fit FIT.vtu  with --sheets: every sheet as a cubic B-spline surface of centre
+  --no-sheets    the seams, junctions and rims only (the sheets' topology as field data)
+  --sheet-fit FIT.vtu  every sheet as a cubic B-spline surface of centre
                  and radius fitted to its exact balls, written as Bezier quadrilaterals
                  (point data Radius, cell data SheetId, SheetFitError), each within T of
                  the sheet's balls (exit 3 when one is not)
@@ -147,7 +147,7 @@ struct Arguments
   double tolerance = 1e-4, step = 0.0, branchStep = 0.0, verifyTolerance = 1e-9;
   double length = 0.0, angle = 360.0, sheetResolution = 0.02, maxStep = 0.05;
   bool shapeGiven = false, outputGiven = false;
-  bool sheets = false;              ///< 3d: the medial sheets too (vtkSheetInterpolator)
+  bool sheets = true;               ///< 3d: the medial sheets too (vtkSheetInterpolator)
   std::string sheetFit;             ///< 3d --sheets: where to write the sheets' B-spline fits
   bool sheetResolutionGiven = false;
   int part = 0; ///< solid or face of a STEP/IGES input
@@ -269,7 +269,9 @@ Arguments parse(int argc, char* argv[])
       a.sheetResolutionGiven = true;
     }
     else if (arg == "--sheets")
-      a.sheets = true;
+      a.sheets = true; // (the default; kept for scripts that ask for them)
+    else if (arg == "--no-sheets")
+      a.sheets = false;
     else if (arg == "--sheet-fit")
       a.sheetFit = value();
     else if (arg == "-j" || arg == "--threads")
@@ -302,7 +304,7 @@ Arguments parse(int argc, char* argv[])
       usageError("more than one INPUT");
   }
   if (!a.sheetFit.empty() && !a.sheets)
-    usageError("--sheet-fit needs --sheets (the fits are of the filled sheets)");
+    usageError("--sheet-fit needs the sheets (it fits them): drop --no-sheets");
   if (a.output.empty())
     a.output = a.command == "batch" ? "exactmat-batch" : "exactmat-" + a.command + ".vtp";
   if (a.command == "3d" && !a.shapeGiven)
@@ -824,7 +826,7 @@ int run3D(const Arguments& a)
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
   std::printf("  skeletal edges      %d (rims at corners of reflex edges)\n", mat->GetNumberOfSkeletalEdges());
   if (!a.sheets)
-    std::printf("  sheets              %d (generator pairs and their bounding seams; --sheets fills them)\n",
+    std::printf("  sheets              %d (generator pairs and their bounding seams; not filled: --no-sheets)\n",
       mat->GetNumberOfSheets());
   else
     std::printf("  sheets              %d filled (%d failed), %d triangles, within %.3g of the exact sheets\n",
@@ -860,7 +862,7 @@ int run3D(const Arguments& a)
     auto count = [](int n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); };
     const std::string title = "MAT of " + label + ": " + count(mat->GetNumberOfJunctions(), "junction") + ", " +
       count(mat->GetNumberOfSeams(), "seam") +
-      (a.sheets ? ", " + count(sheets->GetNumberOfInterpolatedSheets(), "sheet") : std::string(" (sheets: --sheets)"));
+      (a.sheets ? ", " + count(sheets->GetNumberOfInterpolatedSheets(), "sheet") : std::string(" (sheets not filled)"));
     if (!writeSolidMATPicture(solid, out, a.png, title, error))
     {
       std::cerr << "exactmat: error: " << error << "\n";
