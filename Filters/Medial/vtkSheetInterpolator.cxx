@@ -459,6 +459,8 @@ void vtkSheetInterpolator::Interpolate(
   this->NumberOfFailedSheets = static_cast<int>(failures.size());
   // A convex edge's sample at a vertex is the seam's radius-0 point there.
   complex.weld(1e-12 * boundary.diagonal());
+  // A sheet closed along a rim by its own points meets the rim's points only at its ends.
+  complex.fanSheetsToCurves();
   this->InterpolationSeconds = secondsSince(t0);
 
   const MedialComplex& written = complex;

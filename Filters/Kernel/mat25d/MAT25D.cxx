@@ -63,6 +63,9 @@ public:
     // Sheets built strip by strip meet along footpoint normals and at nodes: one vertex
     // there, so the output is a connected complex.
     C.weld(1e-12 * Fine);
+    // The seams keep every sample, the sheets only columns about SheetResolution apart:
+    // the sheets' border triangles are fanned through the seams' points in between.
+    C.fanSheetsToCurves();
     return std::move(C);
   }
 

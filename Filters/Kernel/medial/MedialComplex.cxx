@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace exactmat
@@ -77,6 +78,87 @@ int priority(MedialPoint3DType t)
   return 0;
 }
 } // namespace
+
+int MedialComplex::fanSheetsToCurves()
+{
+  // Where each point lies on the curves: (element, index along it).
+  std::map<int, std::vector<std::pair<int, int>>> onCurve;
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e)
+    if (elements[e].type == MedialElementType::Seam || elements[e].type == MedialElementType::SkeletalEdge)
+      for (int i = 0; i < static_cast<int>(elements[e].points.size()); ++i)
+        onCurve[elements[e].points[i]].push_back({ e, i });
+  // The curve points strictly between a and b, from a to b (the shortest such run), or none.
+  auto between = [&](int a, int b) {
+    std::vector<int> run;
+    const auto ia = onCurve.find(a), ib = onCurve.find(b);
+    if (ia == onCurve.end() || ib == onCurve.end())
+      return run;
+    for (const auto& [ea, i] : ia->second)
+      for (const auto& [eb, j] : ib->second)
+      {
+        if (ea != eb || std::abs(i - j) < 2 || (!run.empty() && std::abs(i - j) - 1 >= static_cast<int>(run.size())))
+          continue;
+        const std::vector<int>& curve = elements[ea].points;
+        run.clear();
+        for (int k = i + (j > i ? 1 : -1); k != j; k += j > i ? 1 : -1)
+          run.push_back(curve[k]);
+      }
+    return run;
+  };
+  int fanned = 0;
+  for (MedialElement& e : elements)
+  {
+    if (e.triangles.empty())
+      continue;
+    // The element's border edges (in one of its triangles only).
+    std::map<std::pair<int, int>, int> uses;
+    for (const auto& t : e.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+    std::vector<std::array<int, 3>> out, work(e.triangles.rbegin(), e.triangles.rend());
+    // (Each fan's triangles are checked again: a corner triangle may have two such edges.)
+    for (size_t guard = 0; !work.empty() && guard < 100 * e.triangles.size() + 1000; ++guard)
+    {
+      const std::array<int, 3> t = work.back();
+      work.pop_back();
+      bool split = false;
+      for (int k = 0; k < 3 && !split; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+        const auto use = uses.find(std::minmax(a, b));
+        if (use == uses.end() || use->second != 1)
+          continue;
+        const std::vector<int> run = between(a, b);
+        if (run.empty())
+          continue;
+        // Only a curve that runs along the edge (its points near the chord), not one that
+        // merely passes through both ends elsewhere.
+        const Vec3 pa = points[a].x, ab = points[b].x - pa;
+        bool along = ab.squaredNorm() > 0.0;
+        for (int m : run)
+        {
+          const double s = std::clamp((points[m].x - pa).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+          along = along && (points[m].x - pa - s * ab).norm() <= 0.25 * ab.norm();
+        }
+        if (!along)
+          continue;
+        split = true;
+        ++fanned;
+        int from = a;
+        for (int m : run)
+        {
+          work.push_back({ { from, m, c } });
+          from = m;
+        }
+        work.push_back({ { from, b, c } });
+      }
+      if (!split)
+        out.push_back(t);
+    }
+    e.triangles = std::move(out);
+  }
+  return fanned;
+}
 
 int MedialComplex::weld(double tolerance)
 {

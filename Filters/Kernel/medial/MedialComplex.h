@@ -77,6 +77,13 @@ struct MedialComplex
   /// and repeated polyline points that collapse. Returns how many points were merged.
   int weld(double tolerance);
 
+  /// A conforming complex: a sheet triangle whose border edge (a, b) joins two points of a
+  /// polyline (a seam, a skeletal edge) that are not neighbours on it — the sheet sampled
+  /// more coarsely than the curve — becomes a fan from its third vertex through the curve's
+  /// points between a and b, so every curve segment is a sheet edge (no T-junction).
+  /// Returns how many triangles were fanned.
+  int fanSheetsToCurves();
+
   int count(MedialElementType type) const;
   int countPoints(MedialPoint3DType type) const;
   int triangleCount() const;
