@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <unordered_map>
 
 namespace exactmat
@@ -82,19 +82,24 @@ int priority(MedialPoint3DType t)
 int MedialComplex::fanSheetsToCurves()
 {
   // Where each point lies on the curves: (element, index along it).
-  std::map<int, std::vector<std::pair<int, int>>> onCurve;
+  std::vector<std::vector<std::pair<int, int>>> onCurve(points.size());
+  bool curves = false;
   for (int e = 0; e < static_cast<int>(elements.size()); ++e)
     if (elements[e].type == MedialElementType::Seam || elements[e].type == MedialElementType::SkeletalEdge)
       for (int i = 0; i < static_cast<int>(elements[e].points.size()); ++i)
+      {
         onCurve[elements[e].points[i]].push_back({ e, i });
+        curves = true;
+      }
+  if (!curves)
+    return 0;
   // The curve points strictly between a and b, from a to b (the shortest such run), or none.
   auto between = [&](int a, int b) {
     std::vector<int> run;
-    const auto ia = onCurve.find(a), ib = onCurve.find(b);
-    if (ia == onCurve.end() || ib == onCurve.end())
+    if (onCurve[a].empty() || onCurve[b].empty())
       return run;
-    for (const auto& [ea, i] : ia->second)
-      for (const auto& [eb, j] : ib->second)
+    for (const auto& [ea, i] : onCurve[a])
+      for (const auto& [eb, j] : onCurve[b])
       {
         if (ea != eb || std::abs(i - j) < 2 || (!run.empty() && std::abs(i - j) - 1 >= static_cast<int>(run.size())))
           continue;
@@ -110,11 +115,15 @@ int MedialComplex::fanSheetsToCurves()
   {
     if (e.triangles.empty())
       continue;
-    // The element's border edges (in one of its triangles only).
-    std::map<std::pair<int, int>, int> uses;
+    // The element's border edges (in one of its triangles only) that join two curve points.
+    std::unordered_map<std::uint64_t, int> uses;
+    auto key = [](int a, int b) {
+      return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+    };
     for (const auto& t : e.triangles)
       for (int k = 0; k < 3; ++k)
-        ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+        if (!onCurve[t[k]].empty() && !onCurve[t[(k + 1) % 3]].empty())
+          ++uses[key(t[k], t[(k + 1) % 3])];
     std::vector<std::array<int, 3>> out, work(e.triangles.rbegin(), e.triangles.rend());
     // (Each fan's triangles are checked again: a corner triangle may have two such edges.)
     for (size_t guard = 0; !work.empty() && guard < 100 * e.triangles.size() + 1000; ++guard)
@@ -125,7 +134,7 @@ int MedialComplex::fanSheetsToCurves()
       for (int k = 0; k < 3 && !split; ++k)
       {
         const int a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-        const auto use = uses.find(std::minmax(a, b));
+        const auto use = uses.find(key(a, b));
         if (use == uses.end() || use->second != 1)
           continue;
         const std::vector<int> run = between(a, b);
