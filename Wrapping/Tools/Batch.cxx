@@ -279,6 +279,7 @@ int runBatch(const BatchJob& job)
         bool failed;
       };
       std::vector<PartFile> writes;
+      std::vector<vtkSmartPointer<vtkPolyData>> finished; // (kept alive until written)
       for (unsigned int k = 0; k < indices.size(); ++k)
       {
         Row& row = rows[indices[k]];
@@ -304,6 +305,28 @@ int runBatch(const BatchJob& job)
         row.points = mat ? mat->GetNumberOfPoints() : 0;
         if (status == 3 || !mat)
           continue;
+        if (job.finish)
+        {
+          std::string why;
+          bool verified = true;
+          const auto t0 = std::chrono::steady_clock::now();
+          vtkSmartPointer<vtkPolyData> done = job.finish(mode, mat, boundaries[indices[k]], why, verified);
+          row.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          if (!done)
+          {
+            row.status = statusWord(3);
+            row.message = why;
+            continue;
+          }
+          if (!verified && status == 0)
+          {
+            row.status = statusWord(2);
+            row.message = why;
+          }
+          finished.push_back(done);
+          mat = done;
+          row.points = mat->GetNumberOfPoints();
+        }
         writes.push_back({ mat, (fs::path(job.outputDir) / (names[indices[k]] + ".vtp")).string(),
           indices[k], false });
       }

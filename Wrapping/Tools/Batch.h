@@ -6,6 +6,7 @@
 
 #include "vtkMATAlgorithm.h"
 
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -29,6 +30,12 @@ struct BatchJob
     load;
   /// The filter for a mode ("2d", "extrude", "revolve", "3d"), configured from the command line.
   std::function<vtkSmartPointer<vtkMATAlgorithm>(const std::string& mode)> makeFilter;
+  /// Optional, per part after its filter (for "3d": the medial sheets): the part's final
+  /// output from its MAT and boundary, or null with `error` set; `verified` false when the
+  /// step's own verification failed.
+  std::function<vtkSmartPointer<vtkPolyData>(const std::string& mode, vtkPolyData* mat,
+    vtkUnstructuredGrid* boundary, std::string& error, bool& verified)>
+    finish;
 };
 
 /// The files a batch reads: every input file, and the part files (.vtu, .json, .step,

@@ -134,6 +134,7 @@ const char* Usage = R"(usage:
   ParaView: every part as one collection) and DIR/summary.csv (part, file, mode, status,
   segments_or_seams, branch_points_or_junctions, points, seconds, verified_error, message).
   A part that cannot be read or computed is reported by name; the others are computed.
+  Solids get their medial sheets, as with 3d (--no-sheets: the seams only).
   --mode M       auto (default: 2d or 3d by the part's cells), 2d, 3d, extrude (needs
                  --length), revolve (needs --axis PX,PY,PZ,DX,DY,DZ)
   DIR defaults to exactmat-batch; exit 1 if a part failed, else 3 if a part's
@@ -920,6 +921,38 @@ int runBatch(const Arguments& a)
     setProfileSteps(f.GetPointer(), a);
     return f;
   };
+  // 3d parts get their sheets, as `exactmat 3d` does (unless --no-sheets).
+  if (a.sheets)
+    job.finish = [&a](const std::string& mode, vtkPolyData* mat, vtkUnstructuredGrid* boundary, std::string& error,
+                   bool& verified) -> vtkSmartPointer<vtkPolyData> {
+      if (mode != "3d")
+        return mat;
+      vtkNew<vtkSheetInterpolator> sheets;
+      sheets->SetInputData(mat);
+      sheets->SetSourceData(boundary);
+      sheets->SetTolerance(a.tolerance);
+      if (a.sheetResolutionGiven)
+        sheets->SetMaximumEdgeLength(a.sheetResolution);
+      sheets->SetNumberOfThreads(a.threads);
+      sheets->SetFitSheets(false);
+      vtkNew<ErrorLine> errors;
+      errors->Quiet = true;
+      vtkNew<vtkCallbackCommand> quiet;
+      sheets->AddObserver(vtkCommand::ErrorEvent, errors);
+      sheets->AddObserver(vtkCommand::WarningEvent, quiet);
+      sheets->Update();
+      if (errors->Failed)
+      {
+        error = "sheets: " + errors->Message;
+        return nullptr;
+      }
+      verified = sheets->GetVerificationPassed();
+      if (!verified)
+        error = "sheets: verification failed (" + std::to_string(sheets->GetNumberOfFailedSheets()) +
+          " sheet(s) not filled, faces covered to " + std::to_string(sheets->GetMaximumCoverageShortfall()) + ")";
+      vtkSmartPointer<vtkPolyData> out = sheets->GetOutput();
+      return out;
+    };
   return exactmat::runBatch(job);
 }
 } // namespace
