@@ -207,6 +207,12 @@ class Batch(unittest.TestCase):
         self.expect_same_mat(os.path.join(self.tmp, "l-prism.vtp"), os.path.join(out, "l-prism.vtp"),
                              "l-prism")
         self.assertGreater(read_vtp(os.path.join(out, "l-prism.vtp")).GetNumberOfPolys(), 100)
+        # The Python (MPI) batch fills them the same way.
+        py_out = os.path.join(self.tmp, "cad-py")
+        env = dict(os.environ)
+        r = run(sys.executable, "-m", "exactmat.batch", folder, "-o", py_out, "-j", "1", "--quiet", env=env)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)  # the bracket
+        self.expect_same_mat(os.path.join(out, "l-prism.vtp"), os.path.join(py_out, "l-prism.vtp"), "l-prism (batch.py)")
 
     def test_usage_errors(self):
         r = run(EXACTMAT, "batch")

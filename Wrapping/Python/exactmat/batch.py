@@ -127,6 +127,29 @@ def make_filter(mode, args):
     return f
 
 
+def fill_sheets(mat, boundary, args):
+    """A solid's medial sheets (vtkSheetInterpolator) after its seams, as ``exactmat batch``
+    fills them: (output, status, message); status 3 when they cannot be filled, 2 when
+    their verification fails."""
+    import exactmat
+    sheets = exactmat.vtkSheetInterpolator()
+    sheets.SetInputData(mat)
+    sheets.SetSourceData(boundary)
+    sheets.SetTolerance(args.tolerance)
+    sheets.SetNumberOfThreads(args.threads)
+    sheets.SetFitSheets(False)
+    sheets.GlobalWarningDisplayOff()
+    errors = exactmat.ErrorObserver()
+    errors.watch(sheets)
+    sheets.Update()
+    if errors.messages:
+        return None, 3, "sheets: " + errors.messages[-1]
+    if not sheets.GetVerificationPassed():
+        return sheets.GetOutput(), 2, (f"sheets: verification failed ({sheets.GetNumberOfFailedSheets()} sheet(s) "
+                                       f"not filled, faces covered to {sheets.GetMaximumCoverageShortfall():g})")
+    return sheets.GetOutput(), 0, ""
+
+
 def progress_printer(rank):
     """A progress observer factory: a line on stderr per 10 % of a group of parts."""
     def make(mode, parts):
@@ -191,6 +214,16 @@ def run_share(files, names, indices, args, progress=None):
             row["points"] = polydata.GetNumberOfPoints() if polydata else 0
             if status == 3 or polydata is None:
                 continue
+            if mode == "3d" and not args.no_sheets:
+                t0 = time.perf_counter()
+                polydata, sheet_status, why = fill_sheets(polydata, parts[k][1], args)
+                row["seconds"] += time.perf_counter() - t0
+                if polydata is None:
+                    row["status"], row["message"] = STATUS[3], why
+                    continue
+                if sheet_status == 2 and status == 0:
+                    row["status"], row["message"] = STATUS[2], why
+                row["points"] = polydata.GetNumberOfPoints()
             writer = vtkXMLPolyDataWriter()
             writer.SetInputData(polydata)
             writer.SetFileName(os.path.join(args.output, names[i] + ".vtp"))
@@ -237,6 +270,7 @@ def main(argv=None):
     p.add_argument("--verify-tolerance", type=float, default=1e-9)
     p.add_argument("--sheet-resolution", type=float, default=0.02)
     p.add_argument("--max-step", type=float, default=0.05)
+    p.add_argument("--no-sheets", action="store_true", help="solids: the seams only, no medial sheets")
     p.add_argument("--quiet", action="store_true", help="no progress lines (rank 0 prints them)")
     args = p.parse_args(argv)
     if args.mode == "extrude" and args.length <= 0:
