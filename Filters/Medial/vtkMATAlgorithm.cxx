@@ -2,6 +2,7 @@
 
 #include "vtkExactMATArrayNames.h"
 #include "vtkMATPartResult.h"
+#include "vtkMATPartSummary.h"
 #include "vtkMATThreads.h"
 #include "vtkMATVerificationReport.h"
 
@@ -14,7 +15,9 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkCommunicator.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkPartitionedDataSet.h>
 #include <vtkPartitionedDataSetCollection.h>
 #include <vtkPolyData.h>
@@ -135,6 +138,8 @@ struct Part
 {
   vtkDataObject* input = nullptr;
   std::string name;
+  long long key = 0;
+  bool absent = false; // an empty leaf of a distributed collection: another rank's part
   vtkSmartPointer<vtkPolyData> output;
   PartResult result;
   std::string error;
@@ -151,10 +156,12 @@ struct Part
   }
 };
 
-// Visits the leaves of a collection in input order: visit(leaf, name, place), where
-// place(o) puts o at the leaf's position in `out` (which has the input's structure).
+// Visits the leaves of a collection in input order: visit(leaf, name, key, place), where
+// key is the leaf's place in the structure (the same on every rank of a distributed
+// collection) and place(o) puts o at the leaf's position in `out` (which has the input's
+// structure).
 void visitParts(vtkCompositeDataSet* in, vtkCompositeDataSet* out,
-  const std::function<void(vtkDataObject*, const std::string&,
+  const std::function<void(vtkDataObject*, const std::string&, long long,
     const std::function<void(vtkDataObject*)>&)>& visit)
 {
   auto* pdcIn = vtkPartitionedDataSetCollection::SafeDownCast(in);
@@ -173,6 +180,7 @@ void visitParts(vtkCompositeDataSet* in, vtkCompositeDataSet* out,
       for (unsigned int j = 0; j < n; ++j)
         if (vtkDataObject* leaf = pds->GetPartitionAsDataObject(j))
           visit(leaf, n > 1 ? name + " #" + std::to_string(j) : name,
+            (static_cast<long long>(i) << 24) + j,
             [pdcOut, i, j](vtkDataObject* o) { pdcOut->SetPartition(i, j, o); });
     }
     return;
@@ -190,58 +198,29 @@ void visitParts(vtkCompositeDataSet* in, vtkCompositeDataSet* out,
     std::string name = "part " + std::to_string(k);
     if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
       name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
-    visit(it->GetCurrentDataObject(), name,
+    visit(it->GetCurrentDataObject(), name, static_cast<long long>(it->GetCurrentFlatIndex()),
       [out, &it](vtkDataObject* o) { out->SetDataSet(it, o); });
   }
 }
 
-// The collection's summary: one row per part (see the class documentation).
-void attachSummary(vtkDataObject* output, const std::vector<Part>& parts)
+// The MPI controller when the pipeline asks for one piece of several (ParaView spreading a
+// collection over pvserver/pvbatch ranks): each rank computes the parts it holds, and
+// the summary is gathered. Else null: one process computes everything it is given.
+vtkMultiProcessController* distributedController(vtkInformationVector* outputVector)
 {
-  vtkNew<vtkStringArray> names, messages;
-  vtkNew<vtkIntArray> status;
-  vtkNew<vtkDoubleArray> seconds, errors;
-  names->SetName(exactmat::arrays::PartName);
-  messages->SetName(exactmat::arrays::PartMessage);
-  status->SetName(exactmat::arrays::PartStatus);
-  seconds->SetName(exactmat::arrays::PartSeconds);
-  errors->SetName(exactmat::arrays::MaximumVerifiedError);
-  // Every figure any part has, in the order the parts first name them.
-  std::vector<exactmat::PartFigure> columns;
-  for (const Part& p : parts)
-    for (const exactmat::PartFigure& f : p.result.figures)
-      if (std::none_of(columns.begin(), columns.end(),
-            [&f](const exactmat::PartFigure& c) { return c.name == f.name; }))
-        columns.push_back(f);
-  std::vector<vtkSmartPointer<vtkDataArray>> figureArrays;
-  for (const exactmat::PartFigure& c : columns)
-  {
-    vtkSmartPointer<vtkDataArray> a;
-    if (c.integer)
-      a = vtkSmartPointer<vtkIntArray>::New();
-    else
-      a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(c.name.c_str());
-    figureArrays.push_back(a);
-  }
-  for (const Part& p : parts)
-  {
-    names->InsertNextValue(p.name);
-    status->InsertNextValue(p.status());
-    messages->InsertNextValue(p.error.empty() ? p.result.verification.report : p.error);
-    seconds->InsertNextValue(p.seconds);
-    errors->InsertNextValue(p.result.verification.maximumError);
-    for (size_t c = 0; c < columns.size(); ++c)
-      figureArrays[c]->InsertNextTuple1(p.result.get(columns[c].name));
-  }
-  vtkFieldData* fd = output->GetFieldData();
-  fd->AddArray(names);
-  fd->AddArray(status);
-  fd->AddArray(messages);
-  fd->AddArray(seconds);
-  fd->AddArray(errors);
-  for (auto& a : figureArrays)
-    fd->AddArray(a);
+  vtkInformation* info = outputVector->GetInformationObject(0);
+  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ||
+    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) < 2)
+    return nullptr;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller && controller->GetNumberOfProcesses() > 1 ? controller : nullptr;
+}
+
+// An empty boundary grid in a distributed run: another rank's share of the collection.
+bool emptyGrid(vtkDataObject* leaf)
+{
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(leaf);
+  return grid && grid->GetNumberOfCells() == 0;
 }
 } // namespace
 
@@ -255,9 +234,19 @@ int vtkMATAlgorithm::RequestData(
   this->NumberOfParts = this->NumberOfFailedParts = 0;
   this->PublishFigures(PartResult{});
 
+  vtkMultiProcessController* distributed = distributedController(outputVector);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
   {
     auto* polyData = vtkPolyData::SafeDownCast(output);
+    if (distributed)
+    {
+      // One boundary in a distributed pipeline lives on one rank (a source or reader gives
+      // it to piece 0): the others output nothing, unless no rank has it.
+      vtkIdType mine = grid->GetNumberOfCells(), total = mine;
+      distributed->AllReduce(&mine, &total, 1, vtkCommunicator::SUM_OP);
+      if (mine == 0 && total > 0)
+        return 1;
+    }
     PartResult result;
     std::string error;
     exactmat::withThreads(this->NumberOfThreads, [&]() {
@@ -304,18 +293,22 @@ int vtkMATAlgorithm::RequestData(
   compositeOut->CopyStructure(compositeIn);
   std::vector<Part> parts;
   visitParts(compositeIn, compositeOut,
-    [&parts](vtkDataObject* leaf, const std::string& name, const std::function<void(vtkDataObject*)>&) {
+    [&parts, distributed](vtkDataObject* leaf, const std::string& name, long long key,
+      const std::function<void(vtkDataObject*)>&) {
       Part p;
       p.input = leaf;
       p.name = name;
+      p.key = key;
+      p.absent = distributed && emptyGrid(leaf);
       parts.push_back(std::move(p));
     });
   const int n = static_cast<int>(parts.size());
-  this->NumberOfParts = n;
 
   auto compute = [this](Part& p) {
     const auto t0 = std::chrono::steady_clock::now();
     p.output = vtkSmartPointer<vtkPolyData>::New();
+    if (p.absent)
+      return;
     try
     {
       auto* grid = vtkUnstructuredGrid::SafeDownCast(p.input);
@@ -354,12 +347,33 @@ int vtkMATAlgorithm::RequestData(
     }
   });
 
-  PartResult sums;
+  std::vector<exactmat::PartRow> rows;
   for (Part& p : parts)
   {
     if (!p.output)
       p.output = vtkSmartPointer<vtkPolyData>::New(); // aborted before this part
-    for (const exactmat::PartFigure& f : p.result.figures)
+    exactmat::PartRow row;
+    row.key = p.key;
+    row.name = p.name;
+    row.status = p.absent ? -1 : p.status();
+    row.message = p.error.empty() ? p.result.verification.report : p.error;
+    row.seconds = p.seconds;
+    row.maximumError = p.result.verification.maximumError;
+    row.figures = p.result.figures;
+    const int status = row.status;
+    rows.push_back(std::move(row));
+    if (status >= 2) // each rank names the failures among its own parts
+      vtkWarningMacro(<< "part '" << p.name << "' "
+                      << (status == 3 ? "failed: " + p.error
+                                      : "verification failed: " + p.result.verification.report));
+  }
+  if (distributed)
+    rows = exactmat::gatherPartRows(distributed, rows);
+  PartResult sums;
+  this->NumberOfParts = static_cast<int>(rows.size());
+  for (const exactmat::PartRow& row : rows)
+  {
+    for (const exactmat::PartFigure& f : row.figures)
     {
       auto it = std::find_if(sums.figures.begin(), sums.figures.end(),
         [&f](const exactmat::PartFigure& s) { return s.name == f.name; });
@@ -368,26 +382,21 @@ int vtkMATAlgorithm::RequestData(
       else
         it->value += f.value;
     }
-    this->MaximumVerifiedError =
-      std::max(this->MaximumVerifiedError, p.result.verification.maximumError);
-    const int status = p.status();
-    if (status >= 2)
+    this->MaximumVerifiedError = std::max(this->MaximumVerifiedError, row.maximumError);
+    if (row.status >= 2)
     {
       ++this->NumberOfFailedParts;
       this->VerificationPassed = false;
-      vtkWarningMacro(<< "part '" << p.name << "' "
-                      << (status == 3 ? "failed: " + p.error
-                                      : "verification failed: " + p.result.verification.report));
     }
   }
   size_t k = 0;
   visitParts(compositeIn, compositeOut,
-    [&parts, &k](vtkDataObject*, const std::string&, const std::function<void(vtkDataObject*)>& place) {
+    [&parts, &k](vtkDataObject*, const std::string&, long long, const std::function<void(vtkDataObject*)>& place) {
       if (k < parts.size())
         place(parts[k++].output);
     });
   this->PublishFigures(sums);
-  attachSummary(compositeOut, parts);
+  exactmat::attachPartSummary(compositeOut->GetFieldData(), rows);
   this->UpdateProgress(1.0);
   return 1;
 }

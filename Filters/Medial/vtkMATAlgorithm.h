@@ -23,6 +23,13 @@
  * concurrently, one part per thread; a single part's verification runs its points
  * concurrently. Results are identical to one thread, bit for bit: each part is computed
  * by the same sequential code and the verification reduces its points in order.
+ *
+ * Distributed (the pipeline asks for one piece of several, as ParaView does over pvserver
+ * or pvbatch ranks): each rank computes the parts it holds (an empty leaf is another
+ * rank's), the summary rows are gathered over the global MPI controller, and every rank's
+ * summary and getters then describe the whole collection. A single boundary is computed
+ * where it is (piece 0 for the project's sources and readers); the other ranks output
+ * nothing.
  */
 #ifndef vtkMATAlgorithm_h
 #define vtkMATAlgorithm_h

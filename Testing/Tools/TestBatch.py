@@ -145,7 +145,8 @@ class Batch(unittest.TestCase):
                    OMPI_MCA_rmaps_base_oversubscribe="1")
         r = run(MPIEXEC, "-n", "2", PVBATCH, "--mpi", "--symmetric", exactmat.batch.__file__,
                 self.planar, "-o", out, "-j", "1", env=env)
-        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        # Two parts fail: every rank, and so mpiexec, exits with exactmat batch's status 1.
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
         self.assertIn("on 2 rank(s)", r.stdout)
         rows = summary(out)
         self.expect_planar_summary(rows, out)
@@ -157,6 +158,22 @@ class Batch(unittest.TestCase):
                 self.expect_same_mat(os.path.join(out, a["part"] + ".vtp"),
                                      os.path.join(reference, a["part"] + ".vtp"), a["part"])
         self.assertEqual([f for f in os.listdir(out) if f.startswith(".summary")], [])
+
+    def test_mpi_batch_of_good_parts_exits_0_with_an_idle_rank(self):
+        # One part on two ranks: rank 1 has no share, sends an empty summary and still
+        # leaves with rank 0's status.
+        folder = os.path.join(self.tmp, "one-part")
+        os.makedirs(folder)
+        shutil.copy(os.path.join(self.planar, "l-shape-4.0.json"), folder)
+        out = os.path.join(self.tmp, "mpi-one")
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
+        r = run(MPIEXEC, "-n", "2", PVBATCH, "--mpi", "--symmetric", exactmat.batch.__file__,
+                folder, "-o", out, "-j", "1", "--quiet", env=env)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("1 parts on 2 rank(s): 1 verified", r.stdout)
+        rows = summary(out)
+        self.assertEqual([(row["part"], row["status"]) for row in rows], [("l-shape-4.0", "verified")])
 
     def test_extruded_parts(self):
         folder = os.path.join(self.tmp, "profiles")

@@ -9,11 +9,12 @@ Without MPI (one rank, threads only): ``python3 -m exactmat.batch parts/ -o resu
 
 Rank r of N takes parts r, r + N, r + 2N, ... (in sorted file order), computes its share
 as one vtkPartitionedDataSetCollection through the filter (its threads: ``-j``), and
-writes each part's MAT; rank 0 then gathers every rank's rows into summary.csv and
-index.pvd. A part that cannot be read or computed is reported by name in the summary;
-the others are computed. Without MPI the exit status is that of ``exactmat batch``: 0 all
-verified, 1 some part failed, 3 some part's verification failed; in pvbatch it is 0 (the
-ranks leave through ParaView's finalisation) and summary.csv says which parts failed.
+writes each part's MAT; rank 0 then gathers every rank's rows (MPI GatherV) into
+summary.csv and index.pvd. A part that cannot be read or computed is reported by name in
+the summary; the others are computed. The exit status, on every rank and so mpiexec's, is
+that of ``exactmat batch``: 0 all verified, 1 some part failed, 3 some part's
+verification failed (mpiexec then also prints that a process "returned a non-zero exit
+code").
 """
 import argparse
 import csv
@@ -257,6 +258,51 @@ def write_summary(rows, output):
     return 1 if failed else 3 if unverified else 0
 
 
+def gather_rows(mpi, rows):
+    """Every rank's summary rows on rank 0 (MPI GatherV of their JSON; the other ranks get
+    their own rows back)."""
+    from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkUnsignedCharArray
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    import numpy
+    payload = numpy.frombuffer(json.dumps({str(i): r for i, r in rows.items()}).encode(), dtype=numpy.uint8)
+    send = numpy_to_vtk(payload.copy(), deep=1, array_type=vtkUnsignedCharArray().GetDataType())
+    received, lengths, offsets = vtkUnsignedCharArray(), vtkIdTypeArray(), vtkIdTypeArray()
+    if not mpi.GatherV(send, received, lengths, offsets, 0):
+        raise RuntimeError("exactmat batch: gathering the ranks' summaries failed")
+    if mpi.GetLocalProcessId() != 0:
+        return rows
+    data = vtk_to_numpy(received).tobytes()
+    gathered = {}
+    for r in range(mpi.GetNumberOfProcesses()):
+        start, length = offsets.GetValue(r), lengths.GetValue(r)
+        gathered.update({int(i): row for i, row in json.loads(data[start:start + length]).items()})
+    return gathered
+
+
+def broadcast_status(mpi, status):
+    """Rank 0's exit status on every rank, so that each leaves mpiexec with it."""
+    from vtkmodules.vtkCommonCore import vtkIntArray
+    value = vtkIntArray()
+    value.InsertNextValue(status)
+    mpi.Broadcast(value, 0)
+    return value.GetValue(0)
+
+
+def leave(code):
+    """Exits with `code`. Under pvbatch the MPI world is finalised first and the process
+    leaves at once (ParaView's own finalisation would finalise MPI a second time), so
+    mpiexec returns the status; a plain Python process just exits."""
+    mpi = controller()
+    if mpi is None:
+        sys.exit(code)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    if mpi.GetNumberOfProcesses() > 1:
+        mpi.Barrier()
+    mpi.Finalize()
+    os._exit(code)
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(prog="exactmat batch (MPI)", description=__doc__.split("\n\n")[0])
     p.add_argument("inputs", nargs="+", help="part files or folders of them")
@@ -286,20 +332,9 @@ def main(argv=None):
     os.makedirs(args.output, exist_ok=True)
     rows = run_share(files, names, range(rank, len(files), size), args,
                      progress_printer(rank) if rank == 0 and not args.quiet else None)
-    # Every rank's rows reach rank 0 through the output folder (shared, as the MAT files are).
-    share = os.path.join(args.output, f".summary-rank{rank}.json")
-    with open(share, "w") as f:
-        json.dump({str(i): r for i, r in rows.items()}, f)
-    if size > 1:
-        mpi.Barrier()
+    gathered = gather_rows(mpi, rows) if size > 1 else rows
     status = 0
     if rank == 0:
-        gathered = {}
-        for r in range(size):
-            path = os.path.join(args.output, f".summary-rank{r}.json")
-            with open(path) as f:
-                gathered.update({int(i): row for i, row in json.load(f).items()})
-            os.remove(path)
         status = write_summary([gathered[i] for i in range(len(files))], args.output)
         print(f"ExactMAT batch: {len(files)} parts on {size} rank(s): "
               + ", ".join(f"{sum(r['status'] == s for r in gathered.values())} {s}"
@@ -309,14 +344,9 @@ def main(argv=None):
                 print(f"  {gathered[i]['part']} ({gathered[i]['file']}): {gathered[i]['status']}: "
                       f"{gathered[i]['message']}")
     if size > 1:
-        mpi.Barrier()
+        status = broadcast_status(mpi, status)
     return status
 
 
 if __name__ == "__main__":
-    code = main()
-    # In pvbatch the process must leave through ParaView's own finalisation (sys.exit there
-    # is an "improper exit" to mpiexec): the status is then in the printed line and
-    # summary.csv. A plain Python process exits with it.
-    if controller() is None:
-        sys.exit(code)
+    leave(main())
