@@ -1,6 +1,7 @@
 #include "vtkMATAlgorithm.h"
 
 #include "vtkExactMATArrayNames.h"
+#include "vtkMATCollection.h"
 #include "vtkMATPartResult.h"
 #include "vtkMATPartSummary.h"
 #include "vtkMATThreads.h"
@@ -9,7 +10,6 @@
 #include "common/InputError.h"
 
 #include <vtkCompositeDataSet.h>
-#include <vtkDataObjectTreeIterator.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
@@ -18,8 +18,6 @@
 #include <vtkCommunicator.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkMultiProcessController.h>
-#include <vtkPartitionedDataSet.h>
-#include <vtkPartitionedDataSetCollection.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
@@ -138,7 +136,7 @@ struct Part
 {
   vtkDataObject* input = nullptr;
   std::string name;
-  long long key = 0;
+  exactmat::PartPlace place;
   bool absent = false; // an empty leaf of a distributed collection: another rank's part
   vtkSmartPointer<vtkPolyData> output;
   PartResult result;
@@ -156,72 +154,6 @@ struct Part
   }
 };
 
-// Visits the leaves of a collection in input order: visit(leaf, name, key, place), where
-// key is the leaf's place in the structure (the same on every rank of a distributed
-// collection) and place(o) puts o at the leaf's position in `out` (which has the input's
-// structure).
-void visitParts(vtkCompositeDataSet* in, vtkCompositeDataSet* out,
-  const std::function<void(vtkDataObject*, const std::string&, long long,
-    const std::function<void(vtkDataObject*)>&)>& visit)
-{
-  auto* pdcIn = vtkPartitionedDataSetCollection::SafeDownCast(in);
-  auto* pdcOut = vtkPartitionedDataSetCollection::SafeDownCast(out);
-  if (pdcIn && pdcOut)
-  {
-    for (unsigned int i = 0; i < pdcIn->GetNumberOfPartitionedDataSets(); ++i)
-    {
-      vtkPartitionedDataSet* pds = pdcIn->GetPartitionedDataSet(i);
-      if (!pds)
-        continue;
-      std::string name = "part " + std::to_string(i);
-      if (pdcIn->HasMetaData(i) && pdcIn->GetMetaData(i)->Has(vtkCompositeDataSet::NAME()))
-        name = pdcIn->GetMetaData(i)->Get(vtkCompositeDataSet::NAME());
-      const unsigned int n = pds->GetNumberOfPartitions();
-      for (unsigned int j = 0; j < n; ++j)
-        if (vtkDataObject* leaf = pds->GetPartitionAsDataObject(j))
-          visit(leaf, n > 1 ? name + " #" + std::to_string(j) : name,
-            (static_cast<long long>(i) << 24) + j,
-            [pdcOut, i, j](vtkDataObject* o) { pdcOut->SetPartition(i, j, o); });
-    }
-    return;
-  }
-  vtkSmartPointer<vtkCompositeDataIterator> it = vtk::TakeSmartPointer(in->NewIterator());
-  if (auto* tree = vtkDataObjectTreeIterator::SafeDownCast(it))
-  {
-    tree->VisitOnlyLeavesOn();
-    tree->TraverseSubTreeOn();
-  }
-  it->SkipEmptyNodesOn();
-  int k = 0;
-  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++k)
-  {
-    std::string name = "part " + std::to_string(k);
-    if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
-      name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
-    visit(it->GetCurrentDataObject(), name, static_cast<long long>(it->GetCurrentFlatIndex()),
-      [out, &it](vtkDataObject* o) { out->SetDataSet(it, o); });
-  }
-}
-
-// The MPI controller when the pipeline asks for one piece of several (ParaView spreading a
-// collection over pvserver/pvbatch ranks): each rank computes the parts it holds, and
-// the summary is gathered. Else null: one process computes everything it is given.
-vtkMultiProcessController* distributedController(vtkInformationVector* outputVector)
-{
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ||
-    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) < 2)
-    return nullptr;
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  return controller && controller->GetNumberOfProcesses() > 1 ? controller : nullptr;
-}
-
-// An empty boundary grid in a distributed run: another rank's share of the collection.
-bool emptyGrid(vtkDataObject* leaf)
-{
-  auto* grid = vtkUnstructuredGrid::SafeDownCast(leaf);
-  return grid && grid->GetNumberOfCells() == 0;
-}
 } // namespace
 
 int vtkMATAlgorithm::RequestData(
@@ -234,7 +166,7 @@ int vtkMATAlgorithm::RequestData(
   this->NumberOfParts = this->NumberOfFailedParts = 0;
   this->PublishFigures(PartResult{});
 
-  vtkMultiProcessController* distributed = distributedController(outputVector);
+  vtkMultiProcessController* distributed = exactmat::distributedController(outputVector);
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
   {
     auto* polyData = vtkPolyData::SafeDownCast(output);
@@ -292,16 +224,15 @@ int vtkMATAlgorithm::RequestData(
   }
   compositeOut->CopyStructure(compositeIn);
   std::vector<Part> parts;
-  visitParts(compositeIn, compositeOut,
-    [&parts, distributed](vtkDataObject* leaf, const std::string& name, long long key,
-      const std::function<void(vtkDataObject*)>&) {
-      Part p;
-      p.input = leaf;
-      p.name = name;
-      p.key = key;
-      p.absent = distributed && emptyGrid(leaf);
-      parts.push_back(std::move(p));
-    });
+  for (const exactmat::CollectionPart& leaf : exactmat::collectionParts(compositeIn))
+  {
+    Part p;
+    p.input = leaf.data;
+    p.name = leaf.name;
+    p.place = leaf.place;
+    p.absent = distributed && exactmat::isEmptyGrid(leaf.data);
+    parts.push_back(std::move(p));
+  }
   const int n = static_cast<int>(parts.size());
 
   auto compute = [this](Part& p) {
@@ -353,7 +284,7 @@ int vtkMATAlgorithm::RequestData(
     if (!p.output)
       p.output = vtkSmartPointer<vtkPolyData>::New(); // aborted before this part
     exactmat::PartRow row;
-    row.key = p.key;
+    row.key = p.place.key();
     row.name = p.name;
     row.status = p.absent ? -1 : p.status();
     row.message = p.error.empty() ? p.result.verification.report : p.error;
@@ -389,12 +320,8 @@ int vtkMATAlgorithm::RequestData(
       this->VerificationPassed = false;
     }
   }
-  size_t k = 0;
-  visitParts(compositeIn, compositeOut,
-    [&parts, &k](vtkDataObject*, const std::string&, long long, const std::function<void(vtkDataObject*)>& place) {
-      if (k < parts.size())
-        place(parts[k++].output);
-    });
+  for (const Part& p : parts)
+    exactmat::setPartAt(compositeOut, p.place, p.output);
   this->PublishFigures(sums);
   exactmat::attachPartSummary(compositeOut->GetFieldData(), rows);
   this->UpdateProgress(1.0);
