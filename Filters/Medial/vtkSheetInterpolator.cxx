@@ -1,6 +1,9 @@
 #include "vtkSheetInterpolator.h"
 
 #include "vtkMATBoundaryConversion.h"
+#include "vtkMATCollection.h"
+#include "vtkMATPartResult.h"
+#include "vtkMATPartSummary.h"
 #include "vtkMATComplexOutput.h"
 #include "vtkMATThreads.h"
 #include "vtkMATVerificationReport.h"
@@ -16,6 +19,11 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommunicator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDemandDrivenPipeline.h>
+#include <vtkMultiProcessController.h>
+#include <vtkSmartPointer.h>
 #include <vtkDoubleArray.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -59,13 +67,45 @@ void vtkSheetInterpolator::SetSourceData(vtkDataObject* source)
 int vtkSheetInterpolator::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
-int vtkSheetInterpolator::FillOutputPortInformation(int port, vtkInformation* info)
+int vtkSheetInterpolator::FillOutputPortInformation(int, vtkInformation* info)
 {
-  // Port 0: the MAT with its sheets; port 1: the sheets' B-spline fits as Bézier cells.
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  // Port 0: the MAT with its sheets; port 1: the sheets' B-spline fits as Bézier cells —
+  // vtkPolyData and vtkUnstructuredGrid for one solid, the input's composite type for a
+  // collection (RequestDataObject).
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+vtkTypeBool vtkSheetInterpolator::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+    return this->RequestDataObject(request, inInfo, outInfo);
+  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+}
+
+int vtkSheetInterpolator::RequestDataObject(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  auto* composite = vtkCompositeDataSet::SafeDownCast(vtkDataObject::GetData(inputVector[0], 0));
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    vtkDataObject* output = vtkDataObject::GetData(info);
+    if (composite)
+    {
+      if (!output || !output->IsA(composite->GetClassName()))
+        info->Set(vtkDataObject::DATA_OBJECT(), vtk::TakeSmartPointer(composite->NewInstance()));
+    }
+    else if (port == 0 && !vtkPolyData::SafeDownCast(output))
+      info->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+    else if (port == 1 && !vtkUnstructuredGrid::SafeDownCast(output))
+      info->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkUnstructuredGrid>::New());
+  }
   return 1;
 }
 
@@ -167,45 +207,223 @@ bool isSweptSheet(MedialElementType type)
 }
 } // namespace
 
-int vtkSheetInterpolator::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+void vtkSheetInterpolator::ResetFigures()
 {
-  vtkPolyData* mat = vtkPolyData::GetData(inputVector[0]);
-  vtkUnstructuredGrid* boundary = vtkUnstructuredGrid::GetData(inputVector[1]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkUnstructuredGrid* fits = vtkUnstructuredGrid::GetData(outputVector, 1);
-  fits->Initialize();
   this->NumberOfFitPatches = this->NumberOfSheetsAboveFitTolerance = 0;
   this->MaximumFitError = this->FitSeconds = 0.0;
   this->NumberOfSheets = this->NumberOfInterpolatedSheets = this->NumberOfFailedSheets = 0;
   this->NumberOfTriangles = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
   this->MaximumDeviation = this->InterpolationSeconds = this->VerificationSeconds = 0.0;
+  this->MaximumCoverageShortfall = 0.0;
   this->MaximumVerifiedError = 0.0;
   this->VerificationPassed = false;
-  if (!mat || !boundary)
-  {
-    vtkErrorMacro(<< "vtkSheetInterpolator needs the MAT (input 0, vtkPolyData) and the exact boundary "
-                     "(input 1, the source: vtkUnstructuredGrid)");
-    return 0;
-  }
+}
+
+std::string vtkSheetInterpolator::FillPart(
+  vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits)
+{
+  fits->Initialize();
+  std::string error;
   try
   {
     this->Interpolate(mat, boundary, output, fits);
+    return error;
   }
   catch (const InputError& e)
   {
-    output->Initialize();
-    fits->Initialize();
-    vtkErrorMacro(<< e.what());
-    return 0;
+    error = e.what();
   }
   catch (const std::bad_alloc&)
   {
-    output->Initialize();
-    fits->Initialize();
-    vtkErrorMacro(<< "out of memory: the sheets ask for more than this machine can hold");
+    error = "out of memory: the sheets ask for more than this machine can hold";
+  }
+  catch (const std::exception& e)
+  {
+    error = std::string("internal error: ") + e.what();
+  }
+  output->Initialize();
+  fits->Initialize();
+  return error;
+}
+
+int vtkSheetInterpolator::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  this->ResetFigures();
+  this->NumberOfParts = this->NumberOfFailedParts = 0;
+  vtkDataObject* matObject = vtkDataObject::GetData(inputVector[0]);
+  vtkDataObject* boundaryObject = vtkDataObject::GetData(inputVector[1]);
+  if (auto* mats = vtkCompositeDataSet::SafeDownCast(matObject))
+  {
+    auto* boundaries = vtkCompositeDataSet::SafeDownCast(boundaryObject);
+    auto* output = vtkCompositeDataSet::SafeDownCast(vtkDataObject::GetData(outputVector, 0));
+    auto* fits = vtkCompositeDataSet::SafeDownCast(vtkDataObject::GetData(outputVector, 1));
+    if (!boundaries || !output || !fits)
+    {
+      vtkErrorMacro(<< "input 0 is a collection of MATs: the source must be the collection of solids they "
+                       "were computed from (the same structure), not a "
+                    << (boundaryObject ? boundaryObject->GetClassName() : "null object"));
+      return 0;
+    }
+    return this->RequestCollection(mats, boundaries, output, fits, outputVector);
+  }
+  vtkPolyData* mat = vtkPolyData::SafeDownCast(matObject);
+  vtkUnstructuredGrid* boundary = vtkUnstructuredGrid::SafeDownCast(boundaryObject);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkUnstructuredGrid* fits = vtkUnstructuredGrid::GetData(outputVector, 1);
+  if (!mat || !boundary || !output || !fits)
+  {
+    vtkErrorMacro(<< "vtkSheetInterpolator needs the MAT (input 0, vtkPolyData) and the exact boundary "
+                     "(input 1, the source: vtkUnstructuredGrid), or a collection of each");
     return 0;
   }
+  if (vtkMultiProcessController* distributed = distributedController(outputVector))
+  {
+    // One solid in a distributed pipeline lives on one rank: the others output nothing.
+    vtkIdType mine = mat->GetNumberOfPoints(), total = mine;
+    distributed->AllReduce(&mine, &total, 1, vtkCommunicator::SUM_OP);
+    if (mine == 0 && total > 0)
+    {
+      fits->Initialize();
+      return 1;
+    }
+  }
+  this->NumberOfParts = 1;
+  const std::string error = this->FillPart(mat, boundary, output, fits);
+  if (!error.empty())
+  {
+    this->NumberOfFailedParts = 1;
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  this->NumberOfFailedParts = this->VerificationPassed ? 0 : 1;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkSheetInterpolator::RequestCollection(vtkCompositeDataSet* mats, vtkCompositeDataSet* boundaries,
+  vtkCompositeDataSet* output, vtkCompositeDataSet* fits, vtkInformationVector* outputVector)
+{
+  vtkMultiProcessController* distributed = distributedController(outputVector);
+  output->CopyStructure(mats);
+  fits->CopyStructure(mats);
+  const std::vector<CollectionPart> parts = collectionParts(mats);
+  std::vector<PartRow> rows;
+  // The figures each part adds to the summary (and, summed, to the getters).
+  struct Sums
+  {
+    int sheets = 0, interpolated = 0, failedSheets = 0, triangles = 0, verified = 0, mismatches = 0;
+    int fitPatches = 0, aboveFit = 0;
+    double deviation = 0.0, interpolation = 0.0, verification = 0.0, coverage = 0.0, fitError = 0.0,
+           fitSeconds = 0.0;
+  } sums;
+  for (size_t k = 0; k < parts.size(); ++k)
+  {
+    const CollectionPart& part = parts[k];
+    const auto t0 = std::chrono::steady_clock::now();
+    PartRow row;
+    row.key = part.place.key();
+    row.name = part.name;
+    auto partOutput = vtkSmartPointer<vtkPolyData>::New();
+    auto partFits = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto* mat = vtkPolyData::SafeDownCast(part.data);
+    auto* boundary = vtkUnstructuredGrid::SafeDownCast(partAt(boundaries, part.place));
+    this->ResetFigures();
+    if (mat && mat->GetNumberOfPoints() == 0 && distributed)
+      row.status = -1; // another rank's part (or one whose MAT failed on every rank)
+    else if (!mat || mat->GetNumberOfPoints() == 0)
+    {
+      row.status = 3;
+      row.message = mat ? "its MAT is empty: the MAT filter failed on this part" : "the part is not a vtkPolyData MAT";
+    }
+    else if (!boundary || boundary->GetNumberOfCells() == 0)
+    {
+      row.status = 3;
+      row.message = "the source has no solid at this part's place (is it the collection the MATs were computed "
+                    "from?)";
+    }
+    else
+    {
+      row.message = this->FillPart(mat, boundary, partOutput, partFits);
+      if (!row.message.empty())
+        row.status = 3;
+      else
+      {
+        auto* report = vtkStringArray::SafeDownCast(partOutput->GetFieldData()->GetAbstractArray(arrays::VerificationReport));
+        row.message = report && report->GetNumberOfValues() > 0 ? report->GetValue(0) : std::string();
+        row.status = !this->VerifyOutput ? 1 : this->VerificationPassed ? 0 : 2;
+        row.maximumError = this->MaximumVerifiedError;
+        PartResult figures;
+        figures.count("NumberOfSheets", this->NumberOfSheets);
+        figures.count("NumberOfInterpolatedSheets", this->NumberOfInterpolatedSheets);
+        figures.count("NumberOfFailedSheets", this->NumberOfFailedSheets);
+        figures.count("NumberOfTriangles", this->NumberOfTriangles);
+        figures.count("NumberOfFitPatches", this->NumberOfFitPatches);
+        figures.count("NumberOfSheetsAboveFitTolerance", this->NumberOfSheetsAboveFitTolerance);
+        figures.measure("MaximumFitError", this->MaximumFitError);
+        figures.measure("MaximumCoverageShortfall", this->MaximumCoverageShortfall);
+        figures.measure("InterpolationSeconds", this->InterpolationSeconds);
+        figures.measure("VerificationSeconds", this->VerificationSeconds);
+        row.figures = figures.figures;
+        sums.sheets += this->NumberOfSheets;
+        sums.interpolated += this->NumberOfInterpolatedSheets;
+        sums.failedSheets += this->NumberOfFailedSheets;
+        sums.triangles += this->NumberOfTriangles;
+        sums.verified += this->NumberOfVerifiedPoints;
+        sums.mismatches += this->NumberOfTouchpointMismatches;
+        sums.fitPatches += this->NumberOfFitPatches;
+        sums.aboveFit += this->NumberOfSheetsAboveFitTolerance;
+        sums.deviation = std::max(sums.deviation, this->MaximumDeviation);
+        sums.coverage = std::max(sums.coverage, this->MaximumCoverageShortfall);
+        sums.fitError = std::max(sums.fitError, this->MaximumFitError);
+        sums.interpolation += this->InterpolationSeconds;
+        sums.verification += this->VerificationSeconds;
+        sums.fitSeconds += this->FitSeconds;
+      }
+    }
+    if (row.status == 3)
+      vtkWarningMacro(<< "part '" << part.name << "' failed: " << row.message);
+    row.seconds = secondsSince(t0);
+    setPartAt(output, part.place, partOutput);
+    setPartAt(fits, part.place, partFits);
+    rows.push_back(std::move(row));
+    this->UpdateProgress(static_cast<double>(k + 1) / static_cast<double>(parts.size()));
+    if (this->CheckAbort())
+      break;
+  }
+  if (distributed)
+    rows = gatherPartRows(distributed, rows);
+  else
+    for (PartRow& row : rows)
+      if (row.status < 0)
+        row.status = 3;
+  this->ResetFigures();
+  this->NumberOfSheets = sums.sheets;
+  this->NumberOfInterpolatedSheets = sums.interpolated;
+  this->NumberOfFailedSheets = sums.failedSheets;
+  this->NumberOfTriangles = sums.triangles;
+  this->NumberOfVerifiedPoints = sums.verified;
+  this->NumberOfTouchpointMismatches = sums.mismatches;
+  this->NumberOfFitPatches = sums.fitPatches;
+  this->NumberOfSheetsAboveFitTolerance = sums.aboveFit;
+  this->MaximumDeviation = sums.deviation;
+  this->MaximumCoverageShortfall = sums.coverage;
+  this->MaximumFitError = sums.fitError;
+  this->InterpolationSeconds = sums.interpolation;
+  this->VerificationSeconds = sums.verification;
+  this->FitSeconds = sums.fitSeconds;
+  this->NumberOfParts = static_cast<int>(rows.size());
+  this->VerificationPassed = true;
+  for (const PartRow& row : rows)
+  {
+    this->MaximumVerifiedError = std::max(this->MaximumVerifiedError, row.maximumError);
+    if (row.status >= 2)
+    {
+      ++this->NumberOfFailedParts;
+      this->VerificationPassed = false;
+    }
+  }
+  attachPartSummary(output->GetFieldData(), rows);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -59,6 +59,17 @@
  * warning and, like a face left uncovered, makes the verification fail: the output is
  * never an incomplete MAT that says it is complete.
  *
+ * Collections: input 0 may be vtkMAT3DFilter's (or vtkMAT25DFilter's) output for a
+ * vtkPartitionedDataSetCollection or vtkMultiBlockDataSet of solids, and the source the
+ * collection of those solids (the same structure). Both outputs then have that structure,
+ * each part's sheets and fits in its place; a part whose MAT is empty (its MAT filter
+ * failed) or whose sheets fail gets empty outputs and does not stop the others. The first
+ * output's field data carry one row per part as vtkMATAlgorithm's do (`PartName`,
+ * `PartStatus`, `PartMessage`, `PartSeconds`, `MaximumVerifiedError`, and the counts:
+ * `NumberOfSheets`, `NumberOfTriangles`, …); the getters hold the sums over the parts. In
+ * a distributed run (one piece of several) each rank fills the parts it holds and the
+ * rows are gathered, as vtkMATAlgorithm does.
+ *
  * @warning Not yet complete: where a sheet's border has stretches that are neither seams nor
  * convex edges (the sheet goes on as another pair's across a side of a face), they are
  * closed by straight lines in the parameter domain; at some corners of reflex edges and
@@ -74,6 +85,7 @@
 #include <string> // for PassExactSheets
 #include <vector> // for PassExactSheets
 
+class vtkCompositeDataSet;
 class vtkUnstructuredGrid;
 namespace exactmat
 {
@@ -146,6 +158,10 @@ public:
   vtkGetMacro(NumberOfSheetsAboveFitTolerance, int);
   vtkGetMacro(FitSeconds, double);
   vtkGetMacro(MaximumVerifiedError, double);
+  /// A collection's parts in the last run, and how many of them failed (an error, or a
+  /// failed verification); 1 and 0 or 1 for one solid.
+  vtkGetMacro(NumberOfParts, int);
+  vtkGetMacro(NumberOfFailedParts, int);
 
 protected:
   vtkSheetInterpolator();
@@ -153,12 +169,19 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  virtual int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkSheetInterpolator(const vtkSheetInterpolator&) = delete;
   void operator=(const vtkSheetInterpolator&) = delete;
 
+  void ResetFigures();
+  /// One solid's sheets into `output` and `fits`; the error that stopped it, or "".
+  std::string FillPart(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
+  int RequestCollection(vtkCompositeDataSet* mats, vtkCompositeDataSet* boundaries, vtkCompositeDataSet* output,
+    vtkCompositeDataSet* fits, vtkInformationVector* outputVector);
   void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
   void WriteFits(const std::vector<exactmat::SheetFit>& fitted, const std::vector<std::string>& fitErrors,
     const std::vector<std::string>& labels, const std::vector<std::vector<int>>& tupleIds, int tuples,
@@ -193,6 +216,8 @@ private:
   double MaximumFitError = 0.0;
   int NumberOfSheetsAboveFitTolerance = 0;
   double FitSeconds = 0.0;
+  int NumberOfParts = 0;
+  int NumberOfFailedParts = 0;
 };
 
 #endif

@@ -6,12 +6,14 @@
 #include "vtkMAT2DFilter.h"
 #include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
+#include "vtkSheetInterpolator.h"
 
 #include "TestHelpers.h"
 #include "vtkMATThreads.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkIntArray.h>
@@ -284,4 +286,73 @@ TEST(MATCollections, SolidsThroughThe3DFilterWithOneItCannotDo)
     junctions += one->GetNumberOfJunctions();
   }
   EXPECT_EQ(all->GetNumberOfJunctions(), junctions);
+}
+
+// The sheets of a collection of solids: vtkMAT3DFilter's collection output and the
+// collection of solids as the source give each solid's own sheets and fits in its place;
+// the solid whose seams failed is named and the others are filled.
+TEST(MATCollections, SheetsOfACollectionOfSolids)
+{
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  const std::vector<std::string> names = { "box", "cylinder", "notched-cube" };
+  for (unsigned int i = 0; i < names.size(); ++i)
+  {
+    vtkNew<vtkNURBSSource> source;
+    source->SetShapeName(names[i].c_str());
+    source->Update();
+    collection->SetPartition(i, 0, source->GetOutput());
+    collection->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), names[i].c_str());
+  }
+  vtkNew<vtkMAT3DFilter> seams;
+  seams->SetInputDataObject(collection);
+  vtkNew<vtkSheetInterpolator> sheets;
+  sheets->SetInputConnection(seams->GetOutputPort());
+  sheets->SetSourceData(collection);
+  sheets->SetNumberOfThreads(2);
+  sheets->Update();
+  auto* out = vtkPartitionedDataSetCollection::SafeDownCast(sheets->GetOutputDataObject(0));
+  auto* fits = vtkPartitionedDataSetCollection::SafeDownCast(sheets->GetOutputDataObject(1));
+  ASSERT_NE(out, nullptr);
+  ASSERT_NE(fits, nullptr);
+  EXPECT_EQ(sheets->GetNumberOfParts(), 3);
+  EXPECT_EQ(sheets->GetNumberOfFailedParts(), 1);
+  EXPECT_FALSE(sheets->GetVerificationPassed());
+  EXPECT_EQ(stringField(out, arrays::PartName, 1), "cylinder");
+  EXPECT_EQ(intField(out, arrays::PartStatus, 1), 3);
+  EXPECT_NE(stringField(out, arrays::PartMessage, 1).find("MAT is empty"), std::string::npos);
+  int triangles = 0;
+  for (unsigned int i : { 0u, 2u })
+  {
+    EXPECT_EQ(intField(out, arrays::PartStatus, i), 0) << names[i];
+    vtkNew<vtkNURBSSource> source;
+    source->SetShapeName(names[i].c_str());
+    vtkNew<vtkMAT3DFilter> one;
+    one->SetInputConnection(source->GetOutputPort());
+    vtkNew<vtkSheetInterpolator> alone;
+    alone->SetInputConnection(one->GetOutputPort());
+    alone->SetSourceConnection(source->GetOutputPort());
+    alone->SetNumberOfThreads(1);
+    alone->Update();
+    ASSERT_TRUE(alone->GetVerificationPassed()) << names[i];
+    expectIdentical(alone->GetOutput(), vtkPolyData::SafeDownCast(out->GetPartition(i, 0)), names[i]);
+    auto* fit = vtkUnstructuredGrid::SafeDownCast(fits->GetPartition(i, 0));
+    ASSERT_NE(fit, nullptr);
+    EXPECT_EQ(fit->GetNumberOfCells(), alone->GetNumberOfFitPatches()) << names[i];
+    EXPECT_GT(fit->GetNumberOfCells(), 0) << names[i];
+    EXPECT_EQ(intField(out, "NumberOfTriangles", i), alone->GetNumberOfTriangles()) << names[i];
+    triangles += alone->GetNumberOfTriangles();
+  }
+  EXPECT_EQ(sheets->GetNumberOfTriangles(), triangles);
+  EXPECT_EQ(vtkPolyData::SafeDownCast(out->GetPartition(1, 0))->GetNumberOfPoints(), 0);
+
+  // The wrong source (one solid for a collection of MATs) is refused, naming what it needs.
+  vtkNew<vtkNURBSSource> box;
+  box->SetShapeName("box");
+  vtkNew<vtkSheetInterpolator> wrong;
+  wrong->SetInputConnection(seams->GetOutputPort());
+  wrong->SetSourceConnection(box->GetOutputPort());
+  auto errors = ErrorRecorder::watch(wrong);
+  wrong->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, vtkSmartPointer<ErrorRecorder>::New());
+  wrong->Update();
+  EXPECT_NE(errors->Messages.find("collection of solids"), std::string::npos) << errors->Messages;
 }

@@ -3,8 +3,9 @@
 are empty grids, as distributed readers leave them) and asks the MAT filter for its piece.
 Every rank computes only its own parts, each equal bit for bit to that part's own run,
 and every rank's output carries the whole collection's summary: the bad part and a part
-no rank holds are named, the filter's counts are the collection's. A single boundary from
-a source (given to piece 0) is computed once, on rank 0, without errors elsewhere.
+no rank holds are named, the filter's counts are the collection's. Solids' seams and
+sheets alike. A single boundary from a source (given to piece 0) is computed once, on
+rank 0, without errors elsewhere.
 """
 import json
 import os
@@ -106,6 +107,46 @@ for i, name in enumerate(names):
               and numpy.array_equal(vtk_to_numpy(part.GetPointData().GetArray("Radius")),
                                     vtk_to_numpy(ref.GetPointData().GetArray("Radius"))),
               f"{name}: the same MAT as its own run, bit for bit")
+
+# Solids: seams and sheets of a collection spread over the ranks, each rank filling its own.
+solid_names = ["box", "notched-cube", "stepped-block"]
+solids = vtkPartitionedDataSetCollection()
+for i, name in enumerate(solid_names):
+    solids.SetPartition(i, 0, shape(name) if i % ranks == rank else vtkUnstructuredGrid())
+    solids.GetMetaData(i).Set(vtkCompositeDataSet.NAME(), name)
+seams = exactmat.vtkMAT3DFilter()
+seams.SetInputDataObject(solids)
+seams.SetNumberOfThreads(1)
+sheets = exactmat.vtkSheetInterpolator()
+sheets.SetInputConnection(seams.GetOutputPort())
+sheets.SetSourceData(solids)
+sheets.SetNumberOfThreads(1)
+sheets.UpdatePiece(rank, ranks, 0)
+complete = sheets.GetOutputDataObject(0)
+fd = complete.GetFieldData()
+check([fd.GetAbstractArray("PartName").GetValue(k) for k in range(fd.GetAbstractArray("PartName").GetNumberOfValues())]
+      == solid_names, "the sheets' summary names every solid on every rank")
+check(sheets.GetNumberOfParts() == 3 and sheets.GetNumberOfFailedParts() == 0,
+      f"sheets: {sheets.GetNumberOfParts()} parts, {sheets.GetNumberOfFailedParts()} failed")
+for i, name in enumerate(solid_names):
+    part = complete.GetPartitionAsDataObject(i, 0)
+    if i % ranks != rank:
+        check(part is None or part.GetNumberOfPoints() == 0, f"{name}: its sheets not filled here")
+        continue
+    source = exactmat.vtkNURBSSource()
+    source.SetShapeName(name)
+    one = exactmat.vtkMAT3DFilter()
+    one.SetInputConnection(source.GetOutputPort())
+    alone = exactmat.vtkSheetInterpolator()
+    alone.SetInputConnection(one.GetOutputPort())
+    alone.SetSourceConnection(source.GetOutputPort())
+    alone.SetNumberOfThreads(1)
+    alone.Update()
+    ref = alone.GetOutput()
+    check(part is not None and part.GetNumberOfPoints() == ref.GetNumberOfPoints() > 0
+          and numpy.array_equal(vtk_to_numpy(part.GetPointData().GetArray("Radius")),
+                                vtk_to_numpy(ref.GetPointData().GetArray("Radius"))),
+          f"{name}: the same sheets as its own run")
 
 # One boundary from a source: piece 0 has it, the other rank outputs nothing, no error.
 source = exactmat.vtkNURBSSource()

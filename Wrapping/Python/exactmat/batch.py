@@ -128,27 +128,32 @@ def make_filter(mode, args):
     return f
 
 
-def fill_sheets(mat, boundary, args):
-    """A solid's medial sheets (vtkSheetInterpolator) after its seams, as ``exactmat batch``
-    fills them: (output, status, message); status 3 when they cannot be filled, 2 when
-    their verification fails."""
+def fill_sheets(mats, solids, args):
+    """The solids' medial sheets (vtkSheetInterpolator on the whole collection) after their
+    seams, as ``exactmat batch`` fills them: the collection of complete MATs, and per part
+    (status, message) — status 3 when the sheets cannot be filled, 2 when their
+    verification fails, else 0."""
     import exactmat
     sheets = exactmat.vtkSheetInterpolator()
-    sheets.SetInputData(mat)
-    sheets.SetSourceData(boundary)
+    sheets.SetInputDataObject(mats)
+    sheets.SetSourceData(solids)
     sheets.SetTolerance(args.tolerance)
     sheets.SetNumberOfThreads(args.threads)
     sheets.SetFitSheets(False)
-    sheets.GlobalWarningDisplayOff()
-    errors = exactmat.ErrorObserver()
-    errors.watch(sheets)
+    sheets.GlobalWarningDisplayOff()  # failed parts are in the summary
     sheets.Update()
-    if errors.messages:
-        return None, 3, "sheets: " + errors.messages[-1]
-    if not sheets.GetVerificationPassed():
-        return sheets.GetOutput(), 2, (f"sheets: verification failed ({sheets.GetNumberOfFailedSheets()} sheet(s) "
-                                       f"not filled, faces covered to {sheets.GetMaximumCoverageShortfall():g})")
-    return sheets.GetOutput(), 0, ""
+    out = sheets.GetOutputDataObject(0)
+    fd = out.GetFieldData()
+    outcome = []
+    for k in range(fd.GetArray("PartStatus").GetNumberOfValues()):
+        status = fd.GetArray("PartStatus").GetValue(k)
+        message = fd.GetAbstractArray("PartMessage").GetValue(k)
+        if status == 2:
+            shortfall = fd.GetArray("MaximumCoverageShortfall").GetValue(k)
+            failed = fd.GetArray("NumberOfFailedSheets").GetValue(k)
+            message = f"verification failed ({failed} sheet(s) not filled, faces covered to {shortfall:g}): {message}"
+        outcome.append((status if status in (2, 3) else 0, "sheets: " + message if status in (2, 3) else ""))
+    return out, outcome
 
 
 def progress_printer(rank):
@@ -199,9 +204,17 @@ def run_share(files, names, indices, args, progress=None):
         out = mat.GetOutputDataObject(0)
         fd = out.GetFieldData()
         planar = mode == "2d"
+        statuses = [fd.GetArray("PartStatus").GetValue(k) for k in range(len(parts))]
+        sheets = None
+        if mode == "3d" and not args.no_sheets:
+            t0 = time.perf_counter()
+            solids = vtkPartitionedDataSetCollection()
+            for k, (i, grid) in enumerate(parts):
+                solids.SetPartition(k, 0, grid)
+            complete, sheets = fill_sheets(out, solids, args)
         for k, (i, _) in enumerate(parts):
             row = rows[i]
-            status = fd.GetArray("PartStatus").GetValue(k)
+            status = statuses[k]
             row["status"] = STATUS[status]
             row["message"] = fd.GetAbstractArray("PartMessage").GetValue(k)
             row["seconds"] += fd.GetArray("PartSeconds").GetValue(k)
@@ -215,15 +228,15 @@ def run_share(files, names, indices, args, progress=None):
             row["points"] = polydata.GetNumberOfPoints() if polydata else 0
             if status == 3 or polydata is None:
                 continue
-            if mode == "3d" and not args.no_sheets:
-                t0 = time.perf_counter()
-                polydata, sheet_status, why = fill_sheets(polydata, parts[k][1], args)
-                row["seconds"] += time.perf_counter() - t0
-                if polydata is None:
+            if sheets is not None:
+                sheet_status, why = sheets[k]
+                row["seconds"] += complete.GetFieldData().GetArray("PartSeconds").GetValue(k)
+                if sheet_status == 3:
                     row["status"], row["message"] = STATUS[3], why
                     continue
                 if sheet_status == 2 and status == 0:
                     row["status"], row["message"] = STATUS[2], why
+                polydata = complete.GetPartitionAsDataObject(k, 0)
                 row["points"] = polydata.GetNumberOfPoints()
             writer = vtkXMLPolyDataWriter()
             writer.SetInputData(polydata)
