@@ -160,6 +160,45 @@ points = single.GetOutput().GetNumberOfPoints()
 check(not errors.messages, f"no error on any rank: {errors.messages}")
 check((points > 0) == (rank == 0), f"the single boundary's MAT on rank 0 only ({points} points)")
 
+# The same through ParaView's own proxies: the plugin's MAT 2D Filter on a .vtpc read by
+# ParaView's distributed reader (which decides who holds what): every rank's output carries
+# the whole summary, each part's MAT is on exactly one rank.
+from paraview import simple
+path = os.path.abspath("exactmat-distributed.vtpc")  # the ranks share the working directory
+if rank == 0:
+    from vtkmodules.vtkIOParallelXML import vtkXMLPartitionedDataSetCollectionWriter
+    parts = vtkPartitionedDataSetCollection()
+    for i, name in enumerate(["rectangle", "l-shape", "star", "circle"]):
+        parts.SetPartition(i, 0, shape(name))
+        parts.GetMetaData(i).Set(vtkCompositeDataSet.NAME(), name)
+    writer = vtkXMLPartitionedDataSetCollectionWriter()
+    writer.SetInputData(parts)
+    writer.SetController(None)  # rank 0 alone writes the whole collection
+    writer.SetFileName(path)
+    check(writer.Write() == 1, "the .vtpc is written")
+controller.Barrier()
+simple.LoadPlugin(sys.argv[1], remote=False, ns=globals())
+reader = simple.XMLPartitionedDatasetCollectionReader(FileName=[path])
+proxy = globals()["MAT2DFilter"](Input=reader)
+proxy.UpdatePipeline()
+local = proxy.GetClientSideObject().GetOutputDataObject(0)
+fd = local.GetFieldData()
+check([fd.GetAbstractArray("PartName").GetValue(k) for k in range(fd.GetAbstractArray("PartName").GetNumberOfValues())]
+      == ["rectangle", "l-shape", "star", "circle"], "ParaView: the whole summary on every rank")
+check(all(fd.GetArray("PartStatus").GetValue(k) == 0 for k in range(4)), "ParaView: every part verified")
+held = vtkIntArray()
+for i in range(4):
+    part = local.GetPartitionAsDataObject(i, 0) if i < local.GetNumberOfPartitionedDataSets() else None
+    held.InsertNextValue(1 if part is not None and part.GetNumberOfPoints() > 0 else 0)
+held_total = vtkIntArray()
+controller.AllReduce(held, held_total, vtkCommunicator.SUM_OP)
+check([held_total.GetValue(i) for i in range(4)] == [1, 1, 1, 1], "ParaView: each part's MAT on exactly one rank")
+controller.Barrier()
+if rank == 0:
+    for f in [path] + [os.path.join(os.path.splitext(path)[0], x) for x in os.listdir(os.path.splitext(path)[0])]:
+        os.remove(f)
+    os.rmdir(os.path.splitext(path)[0])
+
 count = vtkIntArray()
 count.InsertNextValue(len(failures))
 total = vtkIntArray()
