@@ -357,6 +357,49 @@ bool quadraticNegativeSomewhere(const BernsteinPoly& h)
   return c0 * u * u + 2.0 * c1 * t * u + c2 * t * t < 0.0;
 }
 
+// The Bernstein coefficients of |C(t)·w(t) − q·w(t)|² − r²·w(t)² (degree 2p) into h[0 … 2p],
+// without allocating: the emptiness test's polynomial, asked for at every tracing step.
+// The arithmetic is BernsteinPoly's own, operation for operation (products d_k·d_k summed
+// in i-major order with C(p,i)·C(p,j), divided by C(2p,m); the three squares added, then
+// r²·(w·w) subtracted), so the answer is bit-identical to building the polynomials.
+int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double radius, double* h)
+{
+  const int p = curve.degree(), n = 2 * p;
+  const Vec4List& hp = curve.homogeneousPoints();
+  double d[3][MaxDegree + 1], w[MaxDegree + 1];
+  for (int i = 0; i <= p; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+      d[k][i] = hp[i](k) - q(k) * hp[i].w();
+    w[i] = hp[i].w();
+  }
+  double sq[3][2 * MaxDegree + 1], ww[2 * MaxDegree + 1];
+  for (int m = 0; m <= n; ++m)
+  {
+    sq[0][m] = sq[1][m] = sq[2][m] = ww[m] = 0.0;
+  }
+  for (int i = 0; i <= p; ++i)
+  {
+    for (int j = 0; j <= p; ++j)
+    {
+      const double b = binomial(p, i) * binomial(p, j);
+      for (int k = 0; k < 3; ++k)
+        sq[k][i + j] += b * d[k][i] * d[k][j];
+      ww[i + j] += b * w[i] * w[j];
+    }
+  }
+  const double r2 = radius * radius;
+  for (int m = 0; m <= n; ++m)
+  {
+    const double c = binomial(n, m);
+    double v = sq[0][m] / c;
+    v += 1.0 * (sq[1][m] / c);
+    v += 1.0 * (sq[2][m] / c);
+    h[m] = v + -1.0 * (r2 * (ww[m] / c));
+  }
+  return n;
+}
+
 bool negativeSomewhere(const BernsteinPoly& h, int depth)
 {
   if (depth == 0 && h.c.size() == 3)
@@ -392,10 +435,13 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
     const double t = len2 > 0.0 ? std::min(1.0, std::max(0.0, (query - a).dot(ab) / len2)) : 0.0;
     return (a + t * ab - query).squaredNorm() < radius * radius;
   }
-  const CurvePolys cp = curvePolys(curve, query);
-  BernsteinPoly h = cp.d[0] * cp.d[0] + cp.d[1] * cp.d[1] + cp.d[2] * cp.d[2];
-  h = h - (radius * radius) * (cp.w * cp.w);
-  return negativeSomewhere(h, 0);
+  double h[2 * MaxDegree + 1];
+  const int n = squaredDistanceMinusRadius(curve, query, radius, h);
+  if (*std::min_element(h, h + n + 1) >= 0.0)
+    return false; // the common answer, without building a polynomial
+  BernsteinPoly poly;
+  poly.c.assign(h, h + n + 1);
+  return negativeSomewhere(poly, 0);
 }
 
 bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius, double touch)
@@ -404,12 +450,12 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
     return curveComesWithin(curve, query, radius);
   if (!(radius > 0.0) || distanceToBox(curve.boundingBox(), query) >= radius)
     return false;
-  const CurvePolys cp = curvePolys(curve, query);
-  BernsteinPoly h = cp.d[0] * cp.d[0] + cp.d[1] * cp.d[1] + cp.d[2] * cp.d[2];
-  h = h - (radius * radius) * (cp.w * cp.w);
-  if (*std::min_element(h.c.begin(), h.c.end()) >= 0.0)
+  double c[2 * MaxDegree + 1];
+  const int n = squaredDistanceMinusRadius(curve, query, radius, c);
+  if (*std::min_element(c, c + n + 1) >= 0.0)
     return false;
-  BernsteinPoly left, right;
+  BernsteinPoly h, left, right;
+  h.c.assign(c, c + n + 1);
   h.split(touch, left, right);
   return negativeSomewhere(left, 1) || negativeSomewhere(right, 1);
 }

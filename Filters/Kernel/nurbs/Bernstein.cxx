@@ -39,17 +39,26 @@ double binomial(int n, int k)
 void bernsteinWithDerivatives(int p, double t, double* out)
 {
   // Build the triangle of Bernstein values degree by degree and keep the last three rows:
-  // B' and B'' of degree p are differences of the rows of degree p−1 and p−2.
-  double rows[3][64] = {};
+  // B' and B'' of degree p are differences of the rows of degree p−1 and p−2. Every entry
+  // read below is written first (row k fills 0 … k), so the rows are not cleared: this runs
+  // at every curve evaluation, and clearing 1.5 KB cost more than the triangle itself.
+  double rows[3][64];
   double* prev2 = rows[0];
   double* prev1 = rows[1];
   double* cur = rows[2];
   const double s = 1.0 - t;
+  double* value = out;
+  double* d1 = out + (p + 1);
+  double* d2 = out + 2 * (p + 1);
   cur[0] = 1.0;
   for (int k = 1; k <= p; ++k)
   {
     std::swap(prev2, prev1);
     std::swap(prev1, cur);
+    // The last row (degree p) goes straight to the output: no copy (a memmove call per
+    // evaluation for a handful of values).
+    if (k == p)
+      cur = value;
     cur[0] = s * prev1[0];
     for (int i = 1; i < k; ++i)
     {
@@ -57,12 +66,10 @@ void bernsteinWithDerivatives(int p, double t, double* out)
     }
     cur[k] = t * prev1[k - 1];
   }
-  double* value = out;
-  double* d1 = out + (p + 1);
-  double* d2 = out + 2 * (p + 1);
+  if (p == 0)
+    value[0] = 1.0;
   for (int i = 0; i <= p; ++i)
   {
-    value[i] = cur[i];
     d1[i] = 0.0;
     d2[i] = 0.0;
   }
