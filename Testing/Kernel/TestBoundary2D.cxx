@@ -227,6 +227,31 @@ TEST(Boundary2D, CrossingsFoundWhereverTheyAre)
   EXPECT_NE(errorOf(piecesOf(overlap)).find("loops 0 and 1 intersect"), std::string::npos);
 }
 
+// Consecutive curves are passed as one when their control polygons advance along one
+// direction (smooth and mild corners); those that fold back at their joint are still
+// searched: a curve that turns back across the one before it is a crossing.
+TEST(Boundary2D, ConsecutiveCurvesThatFoldBackCross)
+{
+  // a → b straight, then a quadratic from b that turns back across the first edge.
+  const BezierCurve first(Vec3List{ Vec3(0, 0, 0), Vec3(2, 0, 0) }, {});
+  const BezierCurve back(Vec3List{ Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(1, -1, 0) }, {});
+  const BezierCurve closing(Vec3List{ Vec3(1, -1, 0), Vec3(0, 0, 0) }, {});
+  const CurveCrossing x = findCrossing({ { &first, &back, &closing } }, 1e-6);
+  EXPECT_TRUE(x.found);
+  // The same corner without the fold: no crossing.
+  const BezierCurve up(Vec3List{ Vec3(2, 0, 0), Vec3(3, 2, 0), Vec3(1, 3, 0) }, {});
+  const BezierCurve home(Vec3List{ Vec3(1, 3, 0), Vec3(0, 0, 0) }, {});
+  EXPECT_FALSE(findCrossing({ { &first, &up, &home } }, 1e-6).found);
+  // A polygon with a spike one ulp-scale wide at a joint: the two edges of the spike
+  // nearly coincide but do not cross.
+  const BezierCurve in(Vec3List{ Vec3(1, 1e-9, 0), Vec3(3, 1, 0) }, {});
+  const BezierCurve out(Vec3List{ Vec3(3, 1, 0), Vec3(1, 2e-9, 0) }, {});
+  const BezierCurve base0(Vec3List{ Vec3(0, 0, 0), Vec3(1, 1e-9, 0) }, {});
+  const BezierCurve base1(Vec3List{ Vec3(1, 2e-9, 0), Vec3(0, 3, 0) }, {});
+  const BezierCurve base2(Vec3List{ Vec3(0, 3, 0), Vec3(0, 0, 0) }, {});
+  EXPECT_FALSE(findCrossing({ { &base0, &in, &out, &base1, &base2 } }, 1e-6).found);
+}
+
 // Nesting is decided on coarse polygons where the probe is far from a loop and on fine
 // ones where it is close: a hole 1e-4 inside the outer loop, and an island in the hole.
 TEST(Boundary2D, NestingOfCloseLoops)

@@ -71,7 +71,16 @@ double areaContribution(const BezierCurve& c)
     const Vec3 a = c.startPoint(), b = c.endPoint();
     return 0.5 * (a.x() * b.y() - a.y() * b.x());
   }
-  const int parts = polynomial && c.degree() <= 16 ? 1 : 4;
+  // Gauss–Legendre with 16 points is exact for polynomials up to degree 31; a rational
+  // piece whose weights stay within a factor 4 has its poles far from [0, 1] (a conic arc
+  // up to a half circle), so one part reaches rounding too. Wilder weights: four parts.
+  double wMin = h4.front().w(), wMax = wMin;
+  for (const Vec4& h : h4)
+  {
+    wMin = std::min(wMin, h.w());
+    wMax = std::max(wMax, h.w());
+  }
+  const int parts = (polynomial && c.degree() <= 16) || (c.degree() <= 3 && wMax <= 4.0 * wMin) ? 1 : 4;
   double sum = 0.0;
   for (int part = 0; part < parts; ++part)
   {

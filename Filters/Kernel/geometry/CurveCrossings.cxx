@@ -87,26 +87,50 @@ struct Search
   // is monotone along u, rational or not (its derivative is a positive combination of the
   // legs), and so is any polyline through its points in order: chords that are not
   // consecutive cover disjoint ranges of u, so none of them cross.
-  static bool monotone(const BezierCurve& c)
+  static bool monotone(const BezierCurve& c) { return monotone(c, nullptr); }
+
+  // The same for two parts one after the other (`next` starts where c ends): their control
+  // polygons joined advance along one direction, so no chord of one crosses a chord of the
+  // other but the two that meet at the joint (consecutive, sharing only it). Neighbouring
+  // parts always have touching boxes, and would be halved down to the finest chords at
+  // every junction of the boundary otherwise.
+  static bool monotone(const BezierCurve& c, const BezierCurve* next)
   {
-    const int p = c.degree();
+    Vec3 points[2 * (MaxDegree + 1)];
+    int n = 0;
+    for (int i = 0; i <= c.degree(); ++i)
+      points[n++] = c.controlPoint(i);
+    if (next)
+      for (int i = 1; i <= next->degree(); ++i)
+        points[n++] = next->controlPoint(i);
     Vec3 sum = Vec3::Zero();
-    for (int i = 0; i < p; ++i)
+    for (int i = 0; i + 1 < n; ++i)
     {
-      const Vec3 leg = c.controlPoint(i + 1) - c.controlPoint(i);
-      const double n = leg.norm();
-      if (n > 0.0)
-        sum += leg / n;
+      const Vec3 leg = points[i + 1] - points[i];
+      const double len = leg.norm();
+      if (len > 0.0)
+        sum += leg / len;
     }
-    for (const Vec3& u : { Vec3(c.endPoint() - c.startPoint()), sum })
+    for (const Vec3& u : { Vec3(points[n - 1] - points[0]), sum })
     {
       bool all = true;
-      for (int i = 0; i < p && all; ++i)
-        all = (c.controlPoint(i + 1) - c.controlPoint(i)).dot(u) > 0.0;
+      for (int i = 0; i + 1 < n && all; ++i)
+        all = (points[i + 1] - points[i]).dot(u) > 0.0;
       if (all)
         return true;
     }
     return false;
+  }
+
+  // q starts where p ends (the next part along the same chain).
+  bool follows(const Part& p, const Part& q) const
+  {
+    if (p.chain != q.chain)
+      return false;
+    const int n = static_cast<int>(chains[p.chain].size());
+    if (p.k == q.k)
+      return p.t1 == q.t0;
+    return q.k == (p.k + 1) % n && p.t1 == 1.0 && q.t0 == 0.0;
   }
 
   // Whether the part's own chords cross (a curve that loops onto itself).
@@ -125,6 +149,8 @@ struct Search
   bool pair(const Part& p, const Part& q)
   {
     if (!p.box.intersects(q.box))
+      return false;
+    if ((follows(p, q) && monotone(p.curve, &q.curve)) || (follows(q, p) && monotone(q.curve, &p.curve)))
       return false;
     if (p.finest && q.finest)
     {
