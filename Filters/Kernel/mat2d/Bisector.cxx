@@ -20,8 +20,12 @@ Vec2 Bisector::residual(const BisectorState& y) const
 
 Eigen::Vector3d Bisector::tangent(const BisectorState& y, int dirA, int dirB) const
 {
-  const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
-  const Vec2 ca = a.dp + y.r * a.dn, cb = -(b.dp + y.r * b.dn), cr = a.n - b.n;
+  return tangent(G->evaluate(A, y.sa), G->evaluate(B, y.sb), y.r, dirA, dirB);
+}
+
+Eigen::Vector3d Bisector::tangent(const GeneratorPoint& a, const GeneratorPoint& b, double r, int dirA, int dirB) const
+{
+  const Vec2 ca = a.dp + r * a.dn, cb = -(b.dp + r * b.dn), cr = a.n - b.n;
   const Eigen::Vector3d row0(ca.x(), cb.x(), cr.x()), row1(ca.y(), cb.y(), cr.y());
   Eigen::Vector3d t = row0.cross(row1);
   const double n = t.norm();
@@ -41,10 +45,14 @@ Eigen::Vector3d Bisector::tangent(const BisectorState& y, int dirA, int dirB) co
 
 double Bisector::motion(const BisectorState& y, const Eigen::Vector3d& t) const
 {
-  const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
-  const Vec2 dx = (a.dp + y.r * a.dn) * t(0) + a.n * t(2);
+  return motion(G->evaluate(A, y.sa), G->evaluate(B, y.sb), y.r, t);
+}
+
+double Bisector::motion(const GeneratorPoint& a, const GeneratorPoint& b, double r, const Eigen::Vector3d& t) const
+{
+  const Vec2 dx = (a.dp + r * a.dn) * t(0) + a.n * t(2);
   const double m = std::max({ dx.norm(), (a.dp * t(0)).norm(), (b.dp * t(1)).norm(),
-    y.r * (a.dn * t(0)).norm(), y.r * (b.dn * t(1)).norm() });
+    r * (a.dn * t(0)).norm(), r * (b.dn * t(1)).norm() });
   return m;
 }
 

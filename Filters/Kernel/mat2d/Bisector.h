@@ -36,9 +36,13 @@ public:
   /// Unit tangent of the solution curve at y (the null vector of the 2×3 Jacobian), with
   /// its sign chosen so that the fronts advance (s_a along `dirA`, s_b along `dirB`).
   Eigen::Vector3d tangent(const BisectorState& y, int dirA, int dirB) const;
+  /// The same from both generators already evaluated at y (a tracing step needs them for
+  /// the point, the tangent, the motion and the step's weights: evaluated once).
+  Eigen::Vector3d tangent(const GeneratorPoint& a, const GeneratorPoint& b, double r, int dirA, int dirB) const;
   /// How far the MAT point, the footpoints and the contact directions move per unit of
   /// y along `t`: the norm used to size steps.
   double motion(const BisectorState& y, const Eigen::Vector3d& t) const;
+  double motion(const GeneratorPoint& a, const GeneratorPoint& b, double r, const Eigen::Vector3d& t) const;
 
   /// Newton on E = 0 with unknown `fixed` (0: s_a, 1: s_b, 2: r) held at its value in y.
   /// Converges to |E| ≤ tolerance in ≤ 30 iterations, else returns false. Parameters

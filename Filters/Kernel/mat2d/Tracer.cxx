@@ -773,7 +773,10 @@ void Tracer::trace(const Pending& p)
         continue;
     }
     const Bisector B(G, a.g, b.g);
-    const Vec2 x0 = B.point(y);
+    // Both generators at y, once: the point, the tangent, the motion and the step's
+    // weights all start from them (each used to evaluate them again).
+    const GeneratorPoint ga0 = G.evaluate(a.g, y.sa), gb0 = G.evaluate(b.g, y.sb);
+    const Vec2 x0 = ga0.p + y.r * ga0.n;
 
     // Closing in on a point of locally maximal positive curvature: end at its centre.
     // The LMPC of the stretch between the fronts does not move while the stretch shrinks
@@ -848,8 +851,8 @@ void Tracer::trace(const Pending& p)
       h *= 0.5;
     }
 
-    const Eigen::Vector3d t = B.tangent(y, +1, -1);
-    const double m = B.motion(y, t);
+    const Eigen::Vector3d t = B.tangent(ga0, gb0, y.r, +1, -1);
+    const double m = B.motion(ga0, gb0, y.r, t);
     if (!(m > 0.0) || t.isZero())
     {
       if (closing)
@@ -908,7 +911,7 @@ void Tracer::trace(const Pending& p)
       if (fixed < 0)
       {
         // Hold the unknown that moves most, measured by its effect on the geometry.
-        const GeneratorPoint ga = G.evaluate(a.g, y.sa), gb = G.evaluate(b.g, y.sb);
+        const GeneratorPoint &ga = ga0, &gb = gb0;
         const double w[3] = { std::abs(t(0)) * (ga.dp.norm() + y.r * ga.dn.norm()),
           std::abs(t(1)) * (gb.dp.norm() + y.r * gb.dn.norm()), std::abs(t(2)) };
         fixed = static_cast<int>(std::max_element(w, w + 3) - w);
