@@ -56,7 +56,7 @@ double Bisector::motion(const GeneratorPoint& a, const GeneratorPoint& b, double
   return m;
 }
 
-bool Bisector::correct(BisectorState& y, int fixed, double tolerance) const
+bool Bisector::correct(BisectorState& y, int fixed, double tolerance, GeneratorPoint* atA, GeneratorPoint* atB) const
 {
   for (int it = 0; it < 30; ++it)
   {
@@ -64,6 +64,10 @@ bool Bisector::correct(BisectorState& y, int fixed, double tolerance) const
     const Vec2 e = a.p + y.r * a.n - b.p - y.r * b.n;
     if (e.norm() <= tolerance)
     {
+      if (atA)
+        *atA = a;
+      if (atB)
+        *atB = b;
       return true;
     }
     const Vec2 cols[3] = { a.dp + y.r * a.dn, -(b.dp + y.r * b.dn), a.n - b.n };

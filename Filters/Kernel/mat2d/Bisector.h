@@ -47,7 +47,10 @@ public:
   /// Newton on E = 0 with unknown `fixed` (0: s_a, 1: s_b, 2: r) held at its value in y.
   /// Converges to |E| ≤ tolerance in ≤ 30 iterations, else returns false. Parameters
   /// must stay in [0,1] and r ≥ 0.
-  bool correct(BisectorState& y, int fixed, double tolerance) const;
+  /// When given, atA and atB receive both generators evaluated at the solution (the
+  /// convergence check's own evaluation: the caller's point and curvatures come free).
+  bool correct(BisectorState& y, int fixed, double tolerance, GeneratorPoint* atA = nullptr,
+    GeneratorPoint* atB = nullptr) const;
 
 private:
   const Generators* G;

@@ -225,6 +225,7 @@ private:
   /// as empty: rounding, and no less than the input's own.
   double diskMargin(double r) const;
   bool curvatureOk(int g, double s, double r) const;
+  bool curvatureOk(int g, const GeneratorPoint& at, double r) const; ///< g evaluated already
   void startAt(int g, double s);
   BoundaryLocation location(int g, double s) const;
   // The LMPC between the fronts when they close in on each other along one smooth run.
@@ -292,7 +293,14 @@ bool Tracer::curvatureOk(int g, double s, double r) const
 {
   if (G[g].kind != GeneratorKind::Edge)
     return true;
-  const double k = G.evaluate(g, s).curvature;
+  return curvatureOk(g, G.evaluate(g, s), r);
+}
+
+bool Tracer::curvatureOk(int g, const GeneratorPoint& at, double r) const
+{
+  if (G[g].kind != GeneratorKind::Edge)
+    return true;
+  const double k = at.curvature;
   return !(k > 0.0) || r * k <= 1.0 + 1e-9;
 }
 
@@ -921,20 +929,21 @@ void Tracer::trace(const Pending& p)
         (fixed == 0 ? y1.sa : y1.sb) = fixedValue;
       }
       const double solveTol = 1e-13 * L;
-      bool ok = B.correct(y1, fixed, solveTol);
+      GeneratorPoint ga1, gb1; // both generators at y1, from the corrector's last check
+      bool ok = B.correct(y1, fixed, solveTol, &ga1, &gb1);
       // The corrector may carry a front past its generator's end (onto the extrapolated
       // curve): solve again with that front held at the end.
       if (ok && fixed != 0 && y1.sa > 1.0 + ParamEps)
       {
         y1.sa = 1.0;
         fixed = 0;
-        ok = B.correct(y1, fixed, solveTol);
+        ok = B.correct(y1, fixed, solveTol, &ga1, &gb1);
       }
       if (ok && fixed != 1 && y1.sb < -ParamEps)
       {
         y1.sb = 0.0;
         fixed = 1;
-        ok = B.correct(y1, fixed, solveTol);
+        ok = B.correct(y1, fixed, solveTol, &ga1, &gb1);
       }
       ok = ok && y1.sa >= a.s - 1e-9 && y1.sb <= b.s + 1e-9 && y1.sa <= 1.0 + ParamEps &&
         y1.sb >= -ParamEps && y1.r >= 0.0;
@@ -951,7 +960,7 @@ void Tracer::trace(const Pending& p)
         if (pastA || pastB)
           ok = false;
       }
-      Vec2 x1 = ok ? B.point(y1) : Vec2::Zero();
+      Vec2 x1 = ok ? Vec2(ga1.p + y1.r * ga1.n) : Vec2::Zero();
       // Next step from the measured chord error (∝ h²), kept within [×0.2, ×2].
       double resize = 0.5;
       if (ok && !O.fixedStep && !joining)
@@ -959,9 +968,10 @@ void Tracer::trace(const Pending& p)
         // Chord error: the true MAT point halfway against the chord's midpoint.
         BisectorState ym{ 0.5 * (y.sa + y1.sa), 0.5 * (y.sb + y1.sb), 0.5 * (y.r + y1.r) };
         const int mid = fixed;
-        if (B.correct(ym, mid, solveTol))
+        GeneratorPoint gam;
+        if (B.correct(ym, mid, solveTol, &gam))
         {
-          const Vec2 xm = B.point(ym);
+          const Vec2 xm = gam.p + ym.r * gam.n;
           const double err = (xm - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
           resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
           if (err > tolerance)
@@ -1007,7 +1017,7 @@ void Tracer::trace(const Pending& p)
       const bool sharedConvexVertex = G[a.g].next == b.g && G[a.g].endJunction == VertexKind::Convex;
       const bool check = !sharedConvexVertex &&
         (checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd);
-      const bool valid = curvatureOk(a.g, y1.sa, y1.r) && curvatureOk(b.g, y1.sb, y1.r) &&
+      const bool valid = curvatureOk(a.g, ga1, y1.r) && curvatureOk(b.g, gb1, y1.r) &&
         (!check || emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb));
       if (!valid)
       {
