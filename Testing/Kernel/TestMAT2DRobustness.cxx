@@ -284,7 +284,13 @@ TEST(MAT2DRobustness, RandomFindingsStayFixed)
 {
   // 33, 256, 376, 382, 796: star polygons with an almost flat convex vertex whose branch
   // point with the next edge the disk tests could not tell from the vertex's normal.
-  const std::vector<int> findings = { 27, 33, 71, 235, 256, 376, 382, 446, 796 };
+  // 523, 678: rational blobs whose curvature peaks exactly where two pieces meet; a step
+  // put one front on that LMPC (the end of its piece) with the other short of it, or both
+  // on it at once with the radius left undetermined, and the segment came out as a false
+  // branch point with two bisectors of a piece with itself (an extra cycle), or ran into
+  // traced boundary. Each is checked as drawn, turned, scaled, reweighted and moved too.
+  const std::vector<int> findings = { 27, 33, 71, 235, 256, 376, 382, 446, 523, 678, 796 };
+  const std::vector<int> everyMotion = { 523, 678 };
   RandomEngine rng(1);
   for (int i = 0; i <= findings.back(); ++i)
   {
@@ -294,6 +300,18 @@ TEST(MAT2DRobustness, RandomFindingsStayFixed)
       continue;
     SCOPED_TRACE("shape " + std::to_string(i) + ": " + s.description + ", " + m.describe());
     EXPECT_TRUE(verifiedOrRefused(m.apply(s.curves)));
+    if (std::find(everyMotion.begin(), everyMotion.end(), i) == everyMotion.end())
+      continue;
+    ShapeMotion turned, scaled, reweighted, moved = m;
+    turned.angle = m.angle;
+    scaled.scale = m.scale;
+    reweighted.weightScale = m.weightScale;
+    moved.weightScale = 1.0;
+    for (const ShapeMotion& part : { ShapeMotion{}, turned, scaled, reweighted, moved })
+    {
+      SCOPED_TRACE(part.describe());
+      EXPECT_TRUE(verifiedOrRefused(part.apply(s.curves)));
+    }
   }
 }
 

@@ -954,10 +954,23 @@ void Tracer::trace(const Pending& p)
           (!std::isnan(hitB) && y1.sb <= hitB + ParamEps);
       if (ok && closing)
       {
-        // Do not step past the LMPC: the segment ends at its centre.
-        const bool pastA = (lmpc.g == a.g && y1.sa > lmpc.s + 1e-12);
-        const bool pastB = (lmpc.g == b.g && y1.sb < lmpc.s - 1e-12);
-        if (pastA || pastB)
+        // Do not step onto or past the LMPC: the segment ends at its centre, reached by
+        // the closing test above (the MAT point within a step of it) before the fronts
+        // get there (they move like the square root of the point's distance to it). A
+        // front that lands on the LMPC alone has a disk larger than the osculating one
+        // there, which fails the curvature criterion; both landing on it at once leave the
+        // radius undetermined (one point, one normal). An LMPC at a smooth junction is
+        // also the end of the generator before it (a blob whose curvature peaks where two
+        // pieces meet).
+        const bool pastA = lmpc.g == a.g && y1.sa > lmpc.s + 1e-12;
+        const bool pastB = lmpc.g == b.g && y1.sb < lmpc.s - 1e-12;
+        const bool aAt = (lmpc.g == a.g && y1.sa >= lmpc.s - ParamEps) ||
+          (lmpc.g == G[a.g].next && lmpc.s <= ParamEps && G[a.g].endJunction == VertexKind::Smooth &&
+            y1.sa >= 1.0 - ParamEps);
+        const bool bAt = (lmpc.g == b.g && y1.sb <= lmpc.s + ParamEps) ||
+          (lmpc.g == G[b.g].prev && lmpc.s >= 1.0 - ParamEps && G[b.g].startJunction == VertexKind::Smooth &&
+            y1.sb <= ParamEps);
+        if (pastA || pastB || aAt || bAt)
           ok = false;
       }
       Vec2 x1 = ok ? Vec2(ga1.p + y1.r * ga1.n) : Vec2::Zero();
