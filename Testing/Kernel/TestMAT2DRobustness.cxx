@@ -315,6 +315,35 @@ TEST(MAT2DRobustness, RandomFindingsStayFixed)
   }
 }
 
+// A finding of `exactmat_bench_random --max-edges 2000` (seed 1, shape 1262): a regular
+// 12-gon with its vertices jittered by 2.2e-9, whose centre is a cluster of branch points
+// that came out as two pieces joined by two segments of 1e-9 (one cycle for no hole). The
+// two pieces are one node now, in every motion.
+TEST(MAT2DRobustness, ClusterJoinedTwiceIsOneNode)
+{
+  RandomEngine rng(1);
+  RandomShape s;
+  ShapeMotion m;
+  for (int i = 0; i <= 1262; ++i)
+  {
+    s = randomDomain(rng, 2000);
+    m = randomMotion(rng);
+  }
+  ASSERT_NE(s.description.find("12-gon"), std::string::npos) << s.description;
+  ShapeMotion turned, scaled, reweighted;
+  turned.angle = m.angle;
+  scaled.scale = m.scale;
+  reweighted.weightScale = m.weightScale;
+  for (const ShapeMotion& part : { ShapeMotion{}, turned, scaled, reweighted, m })
+  {
+    SCOPED_TRACE(s.description + ", " + part.describe());
+    const Result r = compute(part.apply(s.curves));
+    EXPECT_TRUE(verified(r));
+    // A tree: nodes = segments + 1.
+    EXPECT_EQ(r.graph.nodes.size(), r.graph.segments.size() + 1);
+  }
+}
+
 // Dense random stars (1,000 edges), moved, scaled and reweighted at random: seed 9 is
 // moved to 2e5 × its size and has an almost flat convex vertex whose branch point with
 // the next edge is within the input's rounding of that vertex's normal.

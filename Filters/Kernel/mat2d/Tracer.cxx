@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <cmath>
 #include <deque>
 #include <unordered_map>
@@ -238,6 +239,8 @@ private:
   void reportProgress();
   /// Joins components of the graph closer than ClusterReach (see the definition).
   void joinClusters();
+  /// Collapses two pieces of one cluster joined twice (a cycle around no hole).
+  void collapseClusterCycles();
   /// The boundary location `distance` (in parameter) ahead of (g, s) in direction dir,
   /// crossing smooth and reflex junctions; false when a convex vertex is in the way.
   bool stepAlong(int& g, double& s, int dir, double distance) const;
@@ -1489,6 +1492,124 @@ void Tracer::joinClusters()
   }
 }
 
+void Tracer::collapseClusterCycles()
+{
+  // A cluster of branch points can also come out as two of its pieces joined by two
+  // segments of a few 1e-9 of the size (a 12-gon with its vertices jittered by 2e-9):
+  // a cycle that encloses no hole — its disks are far larger than it — and that the
+  // verification would count as one. The two pieces are one node; the segments between
+  // them, loops of no length, go.
+  const double reach = ClusterReach * L;
+  auto tiny = [&](const MedialSegment& s) {
+    double length = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < s.samples.size(); ++k)
+    {
+      if (k > 0)
+        length += (s.samples[k].x - s.samples[k - 1].x).norm();
+      smallest = std::min(smallest, s.samples[k].radius);
+    }
+    return length <= reach && smallest > 1e3 * reach;
+  };
+  const int n = static_cast<int>(Graph.nodes.size());
+  std::vector<bool> dropSegment(Graph.segments.size(), false), dropNode(n, false);
+  bool changed = false;
+  for (int round = 0; round < n; ++round)
+  {
+    // The first pair of nodes joined by two tiny segments.
+    int keep = -1, gone = -1;
+    for (int i = 0; i < n && keep < 0; ++i)
+    {
+      if (dropNode[i])
+        continue;
+      std::map<int, int> tinyTo;
+      for (const int sid : Graph.nodes[i].segments)
+      {
+        const MedialSegment& s = Graph.segments[sid];
+        if (dropSegment[sid] || s.startNode == s.endNode || !tiny(s))
+          continue;
+        const int other = s.startNode == i ? s.endNode : s.startNode;
+        if (++tinyTo[other] == 2)
+        {
+          keep = i;
+          gone = other;
+          break;
+        }
+      }
+    }
+    if (keep < 0)
+      break;
+    changed = true;
+    MedialNode& k = Graph.nodes[keep];
+    std::vector<int> segments;
+    for (const int sid : k.segments)
+    {
+      const MedialSegment& s = Graph.segments[sid];
+      if ((s.startNode == keep && s.endNode == gone) || (s.startNode == gone && s.endNode == keep))
+        dropSegment[sid] = true;
+      else
+        segments.push_back(sid);
+    }
+    for (const int sid : Graph.nodes[gone].segments)
+    {
+      if (dropSegment[sid])
+        continue;
+      MedialSegment& s = Graph.segments[sid];
+      for (const bool atStart : { true, false })
+      {
+        if ((atStart ? s.startNode : s.endNode) != gone)
+          continue;
+        (atStart ? s.startNode : s.endNode) = keep;
+        MedialSample& end = atStart ? s.samples.front() : s.samples.back();
+        end.x = k.sample.x;
+        end.radius = k.sample.radius;
+      }
+      if (std::find(segments.begin(), segments.end(), sid) == segments.end())
+        segments.push_back(sid);
+    }
+    k.segments = segments;
+    for (const BoundaryLocation& f : Graph.nodes[gone].footpoints)
+      if (std::none_of(k.footpoints.begin(), k.footpoints.end(), [&](const BoundaryLocation& o) { return o.g == f.g; }))
+        k.footpoints.push_back(f);
+    if (k.footpoints.size() >= 3)
+      k.type = MedialPointType::Branch;
+    Graph.nodes[gone].segments.clear();
+    dropNode[gone] = true;
+  }
+  if (!changed)
+    return;
+  // Remove the segments and nodes collapsed away, and renumber.
+  std::vector<int> segmentNumber(Graph.segments.size(), -1), nodeNumber(n, -1);
+  std::vector<MedialSegment> segments;
+  for (size_t sid = 0; sid < Graph.segments.size(); ++sid)
+    if (!dropSegment[sid])
+    {
+      segmentNumber[sid] = static_cast<int>(segments.size());
+      segments.push_back(std::move(Graph.segments[sid]));
+    }
+  std::vector<MedialNode> nodes;
+  for (int i = 0; i < n; ++i)
+    if (!dropNode[i])
+    {
+      nodeNumber[i] = static_cast<int>(nodes.size());
+      nodes.push_back(std::move(Graph.nodes[i]));
+    }
+  for (MedialNode& node : nodes)
+  {
+    std::vector<int> ids;
+    for (const int sid : node.segments)
+      if (segmentNumber[sid] >= 0)
+        ids.push_back(segmentNumber[sid]);
+    node.segments = ids;
+  }
+  for (MedialSegment& s : segments)
+  {
+    s.startNode = nodeNumber[s.startNode];
+    s.endNode = nodeNumber[s.endNode];
+  }
+  Graph.nodes = std::move(nodes);
+  Graph.segments = std::move(segments);
+}
+
 MedialGraph Tracer::run()
 {
   TotalMeasure = std::max(1.0, static_cast<double>(G.size()));
@@ -1539,6 +1660,7 @@ MedialGraph Tracer::run()
   if (O.progress)
     O.progress(std::min(1.0, Cover.coveredMeasure() / TotalMeasure));
   joinClusters();
+  collapseClusterCycles();
   Graph.mergeJoints();
   return std::move(Graph);
 }
