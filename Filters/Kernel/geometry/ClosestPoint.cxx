@@ -33,59 +33,70 @@ constexpr int MaxPatchBoxes = 200000;
 // Split a little off the middle: symmetric shapes put roots exactly at t = 1/2.
 constexpr double SplitAt = 0.4871;
 
-// Components of a homogeneous Bézier curve as Bernstein polynomials.
-struct CurvePolys
+// The product of two Bernstein polynomials on the stack, with BernsteinPoly's own
+// arithmetic (operator*), operation for operation.
+int bernsteinProduct(const double* a, int m, const double* b, int n, double* out)
 {
-  BernsteinPoly d[3]; ///< D = A − P·w
-  BernsteinPoly w;
-};
+  for (int k = 0; k <= m + n; ++k)
+    out[k] = 0.0;
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j)
+      out[i + j] += binomial(m, i) * binomial(n, j) * a[i] * b[j];
+  for (int k = 0; k <= m + n; ++k)
+    out[k] /= binomial(m + n, k);
+  return m + n;
+}
 
-CurvePolys curvePolys(const BezierCurve& c, const Vec3& q)
+// stationarityPoly(curvePolys(curve, q)) and the scales curveFootpoints measures it by,
+// without allocating (every distance query of the verification asks for it): the same
+// operations in the same order, so the coefficients are bit-identical. Returns g's degree.
+struct StationarityScales
 {
-  CurvePolys cp;
-  const int p = c.degree();
-  for (int k = 0; k < 3; ++k)
-  {
-    cp.d[k].c.resize(p + 1);
-  }
-  cp.w.c.resize(p + 1);
+  double dMax = 0.0, dpMax = 0.0, wMax = 0.0;
+  bool polynomial = true;
+};
+int stationarityOnStack(const BezierCurve& curve, const Vec3& q, double* g, StationarityScales& sc)
+{
+  constexpr int N = MaxDegree + 1;
+  const int p = curve.degree();
+  const Vec4List& hp = curve.homogeneousPoints();
+  double d[3][N], w[N], dw[N], dk[N], a[3 * N], b[3 * N], diff[3 * N], term[3 * N];
   for (int i = 0; i <= p; ++i)
   {
-    const Vec4& h = c.homogeneousPoints()[i];
     for (int k = 0; k < 3; ++k)
-    {
-      cp.d[k].c[i] = h(k) - q(k) * h.w();
-    }
-    cp.w.c[i] = h.w();
+      d[k][i] = hp[i](k) - q(k) * hp[i].w();
+    w[i] = hp[i].w();
+    sc.polynomial = sc.polynomial && w[i] == w[0];
   }
-  return cp;
-}
-
-bool constantWeights(const BernsteinPoly& w)
-{
-  for (double v : w.c)
-  {
-    if (v != w.c.front())
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// g with sign((C − P)·C'): D·D' for polynomial curves, D·(D'w − Dw') for rational ones.
-BernsteinPoly stationarityPoly(const CurvePolys& cp)
-{
-  BernsteinPoly g;
-  const bool polynomial = constantWeights(cp.w);
-  const BernsteinPoly dw = cp.w.derivative();
+  for (int i = 0; i < p; ++i)
+    dw[i] = p * (w[i + 1] - w[i]);
+  int n = 0;
   for (int k = 0; k < 3; ++k)
   {
-    const BernsteinPoly dk = cp.d[k].derivative();
-    BernsteinPoly term = polynomial ? cp.d[k] * dk : cp.d[k] * (dk * cp.w - cp.d[k] * dw);
-    g = g.c.empty() ? term : g + term;
+    for (int i = 0; i < p; ++i)
+      dk[i] = p * (d[k][i + 1] - d[k][i]);
+    int m;
+    if (sc.polynomial)
+      m = bernsteinProduct(d[k], p, dk, p - 1, term);
+    else
+    {
+      const int e = bernsteinProduct(dk, p - 1, w, p, a);
+      bernsteinProduct(d[k], p, dw, p - 1, b);
+      for (int i = 0; i <= e; ++i)
+        diff[i] = a[i] + -1.0 * b[i];
+      m = bernsteinProduct(d[k], p, diff, e, term);
+    }
+    for (int i = 0; i <= m; ++i)
+      g[i] = k == 0 ? term[i] : g[i] + 1.0 * term[i];
+    n = m;
+    for (int i = 0; i <= p; ++i)
+      sc.dMax = std::max(sc.dMax, std::abs(d[k][i]));
+    for (int i = 0; i < p; ++i)
+      sc.dpMax = std::max(sc.dpMax, std::abs(dk[i]));
   }
-  return g;
+  for (int i = 0; i <= p; ++i)
+    sc.wMax = std::max(sc.wMax, std::abs(w[i]));
+  return n;
 }
 
 // Newton polish of f(t) = (C − P)·C' = 0 from t0, kept inside [lo, hi]. A step is taken
@@ -251,17 +262,14 @@ std::vector<CurveFootpoint> curveFootpoints(
   {
     return result;
   }
-  const CurvePolys cp = curvePolys(curve, query);
-  const BernsteinPoly g = stationarityPoly(cp);
+  double gs[3 * (MaxDegree + 1)];
+  StationarityScales sc;
+  const int gDegree = stationarityOnStack(curve, query, gs, sc);
+  BernsteinPoly g;
+  g.c.assign(gs, gs + gDegree + 1);
   // The scale of g: |D|·|D'|·w² bounds its coefficients; 1e-14 of it is rounding noise.
-  double dMax = 0.0, dpMax = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    dMax = std::max(dMax, cp.d[k].maxAbs());
-    dpMax = std::max(dpMax, cp.d[k].derivative().maxAbs());
-  }
-  const double wMax = cp.w.maxAbs();
-  const double scale = dMax * (dpMax + dMax) * wMax * (constantWeights(cp.w) ? 1.0 : wMax);
+  const double dMax = sc.dMax, dpMax = sc.dpMax, wMax = sc.wMax;
+  const double scale = dMax * (dpMax + dMax) * wMax * (sc.polynomial ? 1.0 : wMax);
   const double zero = 1e-14 * scale;
   auto make = [&](double t, bool atEnd) {
     CurveFootpoint f;
