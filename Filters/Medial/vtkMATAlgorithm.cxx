@@ -120,12 +120,7 @@ void attachFigures(vtkDataObject* output, const PartResult& result)
 {
   for (const exactmat::PartFigure& f : result.figures)
   {
-    vtkSmartPointer<vtkDataArray> a;
-    if (f.integer)
-      a = vtkSmartPointer<vtkIntArray>::New();
-    else
-      a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(f.name.c_str());
+    vtkSmartPointer<vtkDataArray> a = exactmat::newFigureArray(f);
     a->InsertNextTuple1(f.value);
     output->GetFieldData()->AddArray(a);
   }

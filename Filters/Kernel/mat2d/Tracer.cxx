@@ -241,6 +241,8 @@ private:
   void joinClusters();
   /// Collapses two pieces of one cluster joined twice (a cycle around no hole).
   void collapseClusterCycles();
+  /// Node `gone` merged into node `keep` (segments, footpoints, type); gone is left empty.
+  void absorbNode(int keep, int gone);
   /// The boundary location `distance` (in parameter) ahead of (g, s) in direction dir,
   /// crossing smooth and reflex junctions; false when a convex vertex is in the way.
   bool stepAlong(int& g, double& s, int dir, double distance) const;
@@ -1444,31 +1446,7 @@ void Tracer::joinClusters()
       break;
     if (find(i) == find(j) || into[i] != i || into[j] != j)
       continue;
-    // j becomes i: its segments end at i exactly, its footpoints join i's.
-    MedialNode& keep = Graph.nodes[i];
-    for (const int sid : Graph.nodes[j].segments)
-    {
-      MedialSegment& s = Graph.segments[sid];
-      for (const bool atStart : { true, false })
-      {
-        if ((atStart ? s.startNode : s.endNode) != j)
-          continue;
-        (atStart ? s.startNode : s.endNode) = i;
-        MedialSample& end = atStart ? s.samples.front() : s.samples.back();
-        end.x = keep.sample.x;
-        end.radius = keep.sample.radius;
-      }
-      keep.segments.push_back(sid);
-    }
-    for (const BoundaryLocation& f : Graph.nodes[j].footpoints)
-    {
-      if (std::none_of(keep.footpoints.begin(), keep.footpoints.end(),
-            [&](const BoundaryLocation& o) { return o.g == f.g; }))
-        keep.footpoints.push_back(f);
-    }
-    if (keep.footpoints.size() >= 3)
-      keep.type = MedialPointType::Branch;
-    Graph.nodes[j].segments.clear();
+    absorbNode(i, j);
     into[j] = i;
     unite(i, j);
   }
@@ -1490,6 +1468,33 @@ void Tracer::joinClusters()
     s.startNode = renumber[s.startNode];
     s.endNode = renumber[s.endNode];
   }
+}
+
+void Tracer::absorbNode(int keep, int gone)
+{
+  // `gone` becomes `keep`: its segments end at keep exactly, its footpoints join keep's.
+  MedialNode& k = Graph.nodes[keep];
+  for (const int sid : Graph.nodes[gone].segments)
+  {
+    MedialSegment& s = Graph.segments[sid];
+    for (const bool atStart : { true, false })
+    {
+      if ((atStart ? s.startNode : s.endNode) != gone)
+        continue;
+      (atStart ? s.startNode : s.endNode) = keep;
+      MedialSample& end = atStart ? s.samples.front() : s.samples.back();
+      end.x = k.sample.x;
+      end.radius = k.sample.radius;
+    }
+    if (std::find(k.segments.begin(), k.segments.end(), sid) == k.segments.end())
+      k.segments.push_back(sid);
+  }
+  for (const BoundaryLocation& f : Graph.nodes[gone].footpoints)
+    if (std::none_of(k.footpoints.begin(), k.footpoints.end(), [&](const BoundaryLocation& o) { return o.g == f.g; }))
+      k.footpoints.push_back(f);
+  if (k.footpoints.size() >= 3)
+    k.type = MedialPointType::Branch;
+  Graph.nodes[gone].segments.clear();
 }
 
 void Tracer::collapseClusterCycles()
@@ -1539,40 +1544,22 @@ void Tracer::collapseClusterCycles()
     if (keep < 0)
       break;
     changed = true;
-    MedialNode& k = Graph.nodes[keep];
-    std::vector<int> segments;
-    for (const int sid : k.segments)
+    // The segments between the two go (loops of no length once they are one node).
+    for (const int node : { keep, gone })
     {
-      const MedialSegment& s = Graph.segments[sid];
-      if ((s.startNode == keep && s.endNode == gone) || (s.startNode == gone && s.endNode == keep))
-        dropSegment[sid] = true;
-      else
-        segments.push_back(sid);
+      std::vector<int>& ids = Graph.nodes[node].segments;
+      ids.erase(std::remove_if(ids.begin(), ids.end(),
+                  [&](int sid) {
+                    const MedialSegment& s = Graph.segments[sid];
+                    const bool between = (s.startNode == keep && s.endNode == gone) ||
+                      (s.startNode == gone && s.endNode == keep);
+                    if (between)
+                      dropSegment[sid] = true;
+                    return between;
+                  }),
+        ids.end());
     }
-    for (const int sid : Graph.nodes[gone].segments)
-    {
-      if (dropSegment[sid])
-        continue;
-      MedialSegment& s = Graph.segments[sid];
-      for (const bool atStart : { true, false })
-      {
-        if ((atStart ? s.startNode : s.endNode) != gone)
-          continue;
-        (atStart ? s.startNode : s.endNode) = keep;
-        MedialSample& end = atStart ? s.samples.front() : s.samples.back();
-        end.x = k.sample.x;
-        end.radius = k.sample.radius;
-      }
-      if (std::find(segments.begin(), segments.end(), sid) == segments.end())
-        segments.push_back(sid);
-    }
-    k.segments = segments;
-    for (const BoundaryLocation& f : Graph.nodes[gone].footpoints)
-      if (std::none_of(k.footpoints.begin(), k.footpoints.end(), [&](const BoundaryLocation& o) { return o.g == f.g; }))
-        k.footpoints.push_back(f);
-    if (k.footpoints.size() >= 3)
-      k.type = MedialPointType::Branch;
-    Graph.nodes[gone].segments.clear();
+    absorbNode(keep, gone);
     dropNode[gone] = true;
   }
   if (!changed)

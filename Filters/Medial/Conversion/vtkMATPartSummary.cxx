@@ -136,6 +136,17 @@ std::vector<PartRow> gatherPartRows(vtkMultiProcessController* controller, const
   return merge(perRank);
 }
 
+vtkSmartPointer<vtkDataArray> newFigureArray(const PartFigure& figure)
+{
+  vtkSmartPointer<vtkDataArray> a;
+  if (figure.integer)
+    a = vtkSmartPointer<vtkIntArray>::New();
+  else
+    a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(figure.name.c_str());
+  return a;
+}
+
 void attachPartSummary(vtkFieldData* fd, const std::vector<PartRow>& rows)
 {
   vtkNew<vtkStringArray> names, messages;
@@ -149,15 +160,7 @@ void attachPartSummary(vtkFieldData* fd, const std::vector<PartRow>& rows)
   const std::vector<PartFigure> columns = figureColumns(rows);
   std::vector<vtkSmartPointer<vtkDataArray>> figureArrays;
   for (const PartFigure& c : columns)
-  {
-    vtkSmartPointer<vtkDataArray> a;
-    if (c.integer)
-      a = vtkSmartPointer<vtkIntArray>::New();
-    else
-      a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(c.name.c_str());
-    figureArrays.push_back(a);
-  }
+    figureArrays.push_back(newFigureArray(c));
   for (const PartRow& r : rows)
   {
     names->InsertNextValue(r.name);

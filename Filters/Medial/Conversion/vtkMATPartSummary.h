@@ -10,9 +10,12 @@
 
 #include "vtkMATPartResult.h"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkFieldData;
 class vtkMultiProcessController;
 
@@ -39,6 +42,9 @@ struct PartRow
 /// rank becomes a failed row, "no boundary cells on any rank". Without a controller of
 /// more than one process the local rows come back, absent parts failed alike.
 std::vector<PartRow> gatherPartRows(vtkMultiProcessController* controller, const std::vector<PartRow>& local);
+
+/// An empty array for a figure, named as it: vtkIntArray for a count, vtkDoubleArray else.
+vtkSmartPointer<vtkDataArray> newFigureArray(const PartFigure& figure);
 
 /// The summary arrays (PartName, PartStatus, PartMessage, PartSeconds,
 /// MaximumVerifiedError, then every figure any part has, in the order parts first name
