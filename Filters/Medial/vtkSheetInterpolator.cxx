@@ -207,6 +207,12 @@ bool isSweptSheet(MedialElementType type)
 }
 } // namespace
 
+void vtkSheetInterpolator::PartProgress(double fraction)
+{
+  // Within one solid of a collection: its share of the whole, so progress only grows.
+  this->UpdateProgress(this->PartRange[0] + fraction * (this->PartRange[1] - this->PartRange[0]));
+}
+
 void vtkSheetInterpolator::ResetFigures()
 {
   this->NumberOfFitPatches = this->NumberOfSheetsAboveFitTolerance = 0;
@@ -329,6 +335,8 @@ int vtkSheetInterpolator::RequestCollection(vtkCompositeDataSet* mats, vtkCompos
     auto* mat = vtkPolyData::SafeDownCast(part.data);
     auto* boundary = vtkUnstructuredGrid::SafeDownCast(partAt(boundaries, part.place));
     this->ResetFigures();
+    this->PartRange[0] = static_cast<double>(k) / static_cast<double>(parts.size());
+    this->PartRange[1] = static_cast<double>(k + 1) / static_cast<double>(parts.size());
     if (mat && mat->GetNumberOfPoints() == 0 && distributed)
       row.status = -1; // another rank's part (or one whose MAT failed on every rank)
     else if (!mat || mat->GetNumberOfPoints() == 0)
@@ -391,6 +399,8 @@ int vtkSheetInterpolator::RequestCollection(vtkCompositeDataSet* mats, vtkCompos
     if (this->CheckAbort())
       break;
   }
+  this->PartRange[0] = 0.0;
+  this->PartRange[1] = 1.0;
   if (distributed)
     rows = gatherPartRows(distributed, rows);
   else
@@ -587,7 +597,7 @@ void vtkSheetInterpolator::Interpolate(
         }
     });
   });
-  this->UpdateProgress(0.6);
+  this->PartProgress(0.6);
   // The B-spline fits (port 1), also independent per sheet.
   const auto fitStart = std::chrono::steady_clock::now();
   std::vector<SheetFit> fitted(groups.size());
@@ -613,7 +623,7 @@ void vtkSheetInterpolator::Interpolate(
     this->WriteFits(fitted, fitErrors, labels, tupleIds, allTuples, fitOptions.tolerance, frame, fits);
   }
   this->FitSeconds = secondsSince(fitStart);
-  this->UpdateProgress(0.7);
+  this->PartProgress(0.7);
   for (size_t k = 0; k < groups.size(); ++k)
   {
     const std::string& label = labels[k];

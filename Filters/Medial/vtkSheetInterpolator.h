@@ -178,6 +178,8 @@ private:
   void operator=(const vtkSheetInterpolator&) = delete;
 
   void ResetFigures();
+  /// Progress within the solid being filled, mapped into its share of a collection.
+  void PartProgress(double fraction);
   /// One solid's sheets into `output` and `fits`; the error that stopped it, or "".
   std::string FillPart(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
   int RequestCollection(vtkCompositeDataSet* mats, vtkCompositeDataSet* boundaries, vtkCompositeDataSet* output,
@@ -218,6 +220,7 @@ private:
   double FitSeconds = 0.0;
   int NumberOfParts = 0;
   int NumberOfFailedParts = 0;
+  double PartRange[2] = { 0.0, 1.0 }; ///< the current solid's share of the progress
 };
 
 #endif

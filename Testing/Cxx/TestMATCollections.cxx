@@ -11,6 +11,7 @@
 #include "TestHelpers.h"
 #include "vtkMATThreads.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
@@ -28,6 +29,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -94,6 +96,21 @@ void expectIdentical(vtkPolyData* a, vtkPolyData* b, const std::string& what)
     for (vtkIdType i = 0; i < u->GetNumberOfValues(); ++i)
       ASSERT_EQ(u->GetVariantValue(i), v->GetVariantValue(i)) << what << " " << u->GetName();
   }
+}
+
+// The catalogue's solids as a collection, one named part each.
+vtkSmartPointer<vtkPartitionedDataSetCollection> catalogueSolids(const std::vector<std::string>& names)
+{
+  auto collection = vtkSmartPointer<vtkPartitionedDataSetCollection>::New();
+  for (unsigned int i = 0; i < names.size(); ++i)
+  {
+    vtkNew<vtkNURBSSource> source;
+    source->SetShapeName(names[i].c_str());
+    source->Update();
+    collection->SetPartition(i, 0, source->GetOutput());
+    collection->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), names[i].c_str());
+  }
+  return collection;
 }
 
 int intField(vtkDataObject* o, const char* name, vtkIdType i = 0)
@@ -249,16 +266,8 @@ TEST(MATCollections, ThreadedVerificationGivesTheSequentialFigures)
 
 TEST(MATCollections, SolidsThroughThe3DFilterWithOneItCannotDo)
 {
-  vtkNew<vtkPartitionedDataSetCollection> collection;
   const std::vector<std::string> names = { "box", "cylinder", "notched-cube", "pillow" };
-  for (unsigned int i = 0; i < names.size(); ++i)
-  {
-    vtkNew<vtkNURBSSource> source;
-    source->SetShapeName(names[i].c_str());
-    source->Update();
-    collection->SetPartition(i, 0, source->GetOutput());
-    collection->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), names[i].c_str());
-  }
+  vtkSmartPointer<vtkPartitionedDataSetCollection> collection = catalogueSolids(names);
   vtkNew<vtkMAT3DFilter> all;
   all->SetInputDataObject(collection);
   all->SetNumberOfThreads(2);
@@ -293,23 +302,26 @@ TEST(MATCollections, SolidsThroughThe3DFilterWithOneItCannotDo)
 // the solid whose seams failed is named and the others are filled.
 TEST(MATCollections, SheetsOfACollectionOfSolids)
 {
-  vtkNew<vtkPartitionedDataSetCollection> collection;
   const std::vector<std::string> names = { "box", "cylinder", "notched-cube" };
-  for (unsigned int i = 0; i < names.size(); ++i)
-  {
-    vtkNew<vtkNURBSSource> source;
-    source->SetShapeName(names[i].c_str());
-    source->Update();
-    collection->SetPartition(i, 0, source->GetOutput());
-    collection->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(), names[i].c_str());
-  }
+  vtkSmartPointer<vtkPartitionedDataSetCollection> collection = catalogueSolids(names);
   vtkNew<vtkMAT3DFilter> seams;
   seams->SetInputDataObject(collection);
   vtkNew<vtkSheetInterpolator> sheets;
   sheets->SetInputConnection(seams->GetOutputPort());
   sheets->SetSourceData(collection);
   sheets->SetNumberOfThreads(2);
+  // Progress over the collection only grows (each solid reports within its share).
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    static_cast<std::vector<double>*>(clientData)->push_back(*static_cast<double*>(callData));
+  });
+  sheets->AddObserver(vtkCommand::ProgressEvent, onProgress);
   sheets->Update();
+  ASSERT_GE(progress.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(progress.back(), 1.0);
   auto* out = vtkPartitionedDataSetCollection::SafeDownCast(sheets->GetOutputDataObject(0));
   auto* fits = vtkPartitionedDataSetCollection::SafeDownCast(sheets->GetOutputDataObject(1));
   ASSERT_NE(out, nullptr);
