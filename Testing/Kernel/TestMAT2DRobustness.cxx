@@ -344,6 +344,33 @@ TEST(MAT2DRobustness, ClusterJoinedTwiceIsOneNode)
   }
 }
 
+// Findings of `exactmat_bench_random --max-edges 2000` (seed 1), each as drawn and moved:
+// 872 and 1054, star polygons whose branch point touches an edge 1e-7 of the size from a
+// reflex corner of almost no sweep, so the footpoints on both sides of the corner are one
+// contact (they gave a wedge of zero width that could not be traced, or traced the wedge
+// beyond from the wrong side of the corner); 1699, a star polygon whose branch point next
+// to an almost flat convex vertex touches the edge beyond it 4e-8 of the size from the
+// front's own foot (taken for the front's contact, so no branch point was found there);
+// 294, a blob whose first disk osculates across a smooth junction (two contacts either
+// side of it that are not one, though the junction is inside the disk's shell).
+TEST(MAT2DRobustness, ContactsEitherSideOfACornerStayFixed)
+{
+  const std::vector<int> findings = { 294, 872, 1054, 1699 };
+  RandomEngine rng(1);
+  for (int i = 0; i <= findings.back(); ++i)
+  {
+    const RandomShape s = randomDomain(rng, 2000);
+    const ShapeMotion m = randomMotion(rng);
+    if (std::find(findings.begin(), findings.end(), i) == findings.end())
+      continue;
+    for (const ShapeMotion& part : { ShapeMotion{}, m })
+    {
+      SCOPED_TRACE("shape " + std::to_string(i) + ": " + s.description + ", " + part.describe());
+      EXPECT_TRUE(verified(compute(part.apply(s.curves))));
+    }
+  }
+}
+
 // Dense random stars (1,000 edges), moved, scaled and reweighted at random: seed 9 is
 // moved to 2e5 × its size and has an almost flat convex vertex whose branch point with
 // the next edge is within the input's rounding of that vertex's normal.

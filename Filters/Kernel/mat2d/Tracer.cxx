@@ -423,9 +423,56 @@ std::vector<std::pair<BoundaryLocation, BoundaryLocation>> Tracer::wedgesOf(int 
     const double ab = (db.norm() > 0 ? std::atan2(db.y(), db.x()) : std::atan2(-b.normal.y(), -b.normal.x()));
     return aa < ab;
   });
+  // Footpoints on either side of a reflex corner, close together and with the corner
+  // inside the shell the footpoints were collected in (an edge's foot 1e-7 from its own
+  // reflex corner, a nearly flat corner between two feet), are one contact: the wedge
+  // between them holds no segment, and the wedges on either side start from the member
+  // the disk really touches (the nearest; tracing moves it across the corner as it
+  // must). Feet either side of a smooth junction stay apart: near a centre of curvature
+  // the whole stretch between two distinct contacts is inside the shell.
+  const double r = n.sample.radius;
+  auto oneContact = [&](const BoundaryLocation& a, const BoundaryLocation& b) {
+    if (r <= 0.0 || (a.point - b.point).norm() > 1e-3 * r)
+      return false;
+    // From a forward to b: at most an edge's end, a reflex corner, the next edge's start.
+    for (int g = a.g, hops = 0; hops < 2; g = G[g].next, ++hops)
+    {
+      if (G[g].endJunction != VertexKind::Reflex ||
+        (location(g, 1.0).point - x).norm() > r * (1.0 + 1e-7) + 1e-9 * L)
+        return false;
+      if (G[g].next == b.g)
+        return true;
+    }
+    return false;
+  };
+  const size_t k = f.size();
+  // Members' angles differ by rounding only: order them along the boundary.
+  for (size_t i = 0; i + 1 < k; ++i)
+    if (oneContact(f[i + 1], f[i]))
+      std::swap(f[i], f[i + 1]);
+  std::vector<BoundaryLocation> contacts;
+  if (k > 2)
+  {
+    size_t first = 0; // a footpoint that starts a contact
+    while (first < k && oneContact(f[(first + k - 1) % k], f[first]))
+      ++first;
+    std::rotate(f.begin(), f.begin() + static_cast<long>(first % k), f.end());
+    for (size_t i = 0; i < k; ++i)
+    {
+      if (i > 0 && oneContact(f[i - 1], f[i]))
+      {
+        if ((f[i].point - x).norm() < (contacts.back().point - x).norm())
+          contacts.back() = f[i];
+      }
+      else
+        contacts.push_back(f[i]);
+    }
+  }
+  if (contacts.size() < 2)
+    contacts = f;
   std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedges;
-  for (size_t i = 0; i < f.size(); ++i)
-    wedges.push_back({ normalised(f[i], +1), normalised(f[(i + 1) % f.size()], -1) });
+  for (size_t i = 0; i < contacts.size(); ++i)
+    wedges.push_back({ normalised(contacts[i], +1), normalised(contacts[(i + 1) % contacts.size()], -1) });
   return wedges;
 }
 
@@ -1114,9 +1161,17 @@ void Tracer::trace(const Pending& p)
           BisectorState best = yb;
           int bestA = a.g, bestB = b.g;
           double bestDistance = INFINITY;
+          // A candidate at a front's own contact is none; across a convex vertex two feet
+          // however close are two contacts (an almost flat vertex next to the branch point).
+          auto atFront = [&](const BoundaryLocation& c, int g, const Vec2& p) {
+            if ((c.point - p).norm() >= 1e-7 * L)
+              return false;
+            return !((c.g == G[g].next && G[g].endJunction == VertexKind::Convex) ||
+              (c.g == G[g].prev && G[g].startJunction == VertexKind::Convex));
+          };
           for (const BoundaryLocation& c : near)
           {
-            if ((c.point - fa.p).norm() < 1e-7 * L || (c.point - fb.p).norm() < 1e-7 * L || c.continuum)
+            if (atFront(c, a.g, fa.p) || atFront(c, b.g, fb.p) || c.continuum)
               continue;
             BisectorState yp = yb;
             double sc = c.s;
