@@ -385,3 +385,15 @@ TEST(MAT2DRobustness, DenseStarsMovedFar)
     EXPECT_TRUE(verifiedOrRefused(m.apply(s.curves)));
   }
 }
+
+// Random stars of 10,000 edges (issue 9: they stopped with "reached traced boundary …
+// where no MAT node is"). Seed 10 has a branch point next to an almost flat convex vertex
+// that the vertex's own segment meets at a grazing angle: its fronts reach the node's
+// feet (the end of the boundary covered before) 2e-6 of the size short of the node.
+TEST(MAT2DRobustness, TenThousandEdgeStar)
+{
+  RandomEngine rng(10);
+  const RandomShape s = randomStarPolygon(rng, 10000);
+  SCOPED_TRACE(s.description);
+  EXPECT_TRUE(verified(compute(s.curves)));
+}

@@ -93,13 +93,6 @@ Generators::Generators(const Boundary2D& boundary)
     boxes.push_back(e.curve.boundingBox());
   }
   Tree.build(boxes);
-  for (size_t g = 0; g < List.size(); ++g)
-  {
-    if (List[g].kind == GeneratorKind::ReflexCorner)
-    {
-      ReflexCorners.push_back(static_cast<int>(g));
-    }
-  }
 }
 
 std::string Generators::describe(const Vec2& x) const
@@ -183,7 +176,17 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
   const double merge = 1e-9 * size2D();
   std::vector<BoundaryLocation> out;
   auto addUnique = [&](const BoundaryLocation& b) { out.push_back(b); };
-  for (int c : ReflexCorners)
+  // A corner within the radius is an end of an edge within it: the tree's candidates
+  // name every corner to look at (not all of them: a star polygon of n edges has n/2).
+  const std::vector<int> candidates = Tree.candidatesWithin(q, radius);
+  std::vector<int> corners;
+  for (int e : candidates)
+    for (int c : { List[GeneratorOfEdge[e]].prev, List[GeneratorOfEdge[e]].next })
+      if (List[c].kind == GeneratorKind::ReflexCorner)
+        corners.push_back(c);
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  for (int c : corners)
   {
     const Generator& g = List[c];
     const Vec2 v = xy(Boundary->vertices()[g.vertex].point);
@@ -201,7 +204,7 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
       addUnique({ c, std::min(1.0, std::max(0.0, s)), v, d.normalized(), false });
     }
   }
-  for (int e : Tree.candidatesWithin(q, radius))
+  for (int e : candidates)
   {
     for (const CurveFootpoint& f :
       curveFootpoints(edges[e].curve, q, radius, 16.0 * Boundary->userFrame().inputRounding()))

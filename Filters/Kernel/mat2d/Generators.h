@@ -98,7 +98,6 @@ private:
   const Boundary2D* Boundary;
   std::vector<Generator> List;
   std::vector<int> CornerOfVertex, GeneratorOfEdge;
-  std::vector<int> ReflexCorners;
   BoundingVolumeHierarchy Tree;
 };
 

@@ -202,6 +202,13 @@ private:
 
   int addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps);
   int findNode(const Vec2& x, double tol) const;
+  /// The node within `reach` of x (other than `exclude`) that touches the boundary where
+  /// one of the fronts does (fa or fb, to 1e-9 of the size). Where a segment meets its end
+  /// node at a grazing angle (next to an almost flat convex vertex) its fronts reach the
+  /// node's feet, which bound the boundary covered before, while its point is still 1e-6
+  /// short: the feet fix the point poorly there. Two maximal disks touching one boundary
+  /// point from one side are nested, so they are one: the node is this segment's end.
+  int nodeWithFeet(const Vec2& x, double reach, int exclude, const Vec2& fa, const Vec2& fb) const;
   void spawnWedges(int node);
   /// The node's wedges: pairs of angularly consecutive footpoints (front a, front b).
   std::vector<std::pair<BoundaryLocation, BoundaryLocation>> wedgesOf(int node) const;
@@ -328,6 +335,41 @@ int Tracer::findNode(const Vec2& x, double tol) const
       {
         const double d = (Graph.nodes[n].sample.x - x).norm();
         if (d <= bestDistance)
+        {
+          bestDistance = d;
+          best = n;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+int Tracer::nodeWithFeet(const Vec2& x, double reach, int exclude, const Vec2& fa, const Vec2& fb) const
+{
+  const double cell = NodeCell * L;
+  const long long k = static_cast<long long>(std::ceil(reach / cell));
+  const long long ci = static_cast<long long>(std::floor(x.x() / cell));
+  const long long cj = static_cast<long long>(std::floor(x.y() / cell));
+  auto touches = [&](const MedialNode& n) {
+    return std::any_of(n.footpoints.begin(), n.footpoints.end(), [&](const BoundaryLocation& f) {
+      return (f.point - fa).norm() <= 1e-9 * L || (f.point - fb).norm() <= 1e-9 * L;
+    });
+  };
+  int best = -1;
+  double bestDistance = reach;
+  for (long long i = ci - k; i <= ci + k; ++i)
+  {
+    for (long long j = cj - k; j <= cj + k; ++j)
+    {
+      const auto it = NodeGrid.find(cellKey(i, j));
+      if (it == NodeGrid.end())
+        continue;
+      for (int n : it->second)
+      {
+        const MedialNode& node = Graph.nodes[n];
+        const double d = (node.sample.x - x).norm();
+        if (n != exclude && d <= bestDistance && touches(node))
         {
           bestDistance = d;
           best = n;
@@ -1307,7 +1349,9 @@ void Tracer::trace(const Pending& p)
       if (joining)
       {
         // Reached boundary traced before: this point is a node of the graph already.
-        const int id = findNode(x1, 1e-6 * L);
+        int id = findNode(x1, 1e-6 * L);
+        if (id < 0)
+          id = nodeWithFeet(x1, 1e-4 * L, p.node, ga1.p, gb1.p);
 #ifdef EXACTMAT_TRACE_DEBUG
         std::fprintf(stderr, "  join at (%.12g %.12g) r %.12g fixed %d a g%d s%.12g b g%d s%.12g -> node %d\n",
           x1.x(), x1.y(), y1.r, fixed, a.g, y1.sa, b.g, y1.sb, id);
@@ -1320,6 +1364,7 @@ void Tracer::trace(const Pending& p)
             G.describe(x1), " where no MAT node is");
         }
         seg.samples.back().x = Graph.nodes[id].sample.x;
+        seg.samples.back().radius = Graph.nodes[id].sample.radius;
         finish(id);
       }
       accepted = true;
