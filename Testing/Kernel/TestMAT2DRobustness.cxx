@@ -352,10 +352,13 @@ TEST(MAT2DRobustness, ClusterJoinedTwiceIsOneNode)
 // to an almost flat convex vertex touches the edge beyond it 4e-8 of the size from the
 // front's own foot (taken for the front's contact, so no branch point was found there);
 // 294, a blob whose first disk osculates across a smooth junction (two contacts either
-// side of it that are not one, though the junction is inside the disk's shell).
+// side of it that are not one, though the junction is inside the disk's shell); 1201
+// (moved), a star polygon whose segment ends at a node next to an almost flat convex
+// vertex with its last step landing on the vertex, 1e-6 from the node: the sample took
+// the node's place but kept the step's feet, and the boundary between was swept twice.
 TEST(MAT2DRobustness, ContactsEitherSideOfACornerStayFixed)
 {
-  const std::vector<int> findings = { 294, 872, 1054, 1699 };
+  const std::vector<int> findings = { 294, 872, 1054, 1201, 1699 };
   RandomEngine rng(1);
   for (int i = 0; i <= findings.back(); ++i)
   {

@@ -1363,8 +1363,25 @@ void Tracer::trace(const Pending& p)
           fail("2D MAT: the segment of generators ", a.g, " and ", b.g, " reached traced boundary at ",
             G.describe(x1), " where no MAT node is");
         }
-        seg.samples.back().x = Graph.nodes[id].sample.x;
-        seg.samples.back().radius = Graph.nodes[id].sample.radius;
+        // The node is exact; the step only came within 1e-6 of it (at a grazing angle, or
+        // landing on a generator's end): its feet are the node's too, so the footpoints
+        // sweep the boundary once.
+        MedialSample& last = seg.samples.back();
+        last.x = Graph.nodes[id].sample.x;
+        last.radius = Graph.nodes[id].sample.radius;
+        for (BoundaryLocation& foot : last.foot)
+        {
+          const Vec2 stepped = foot.point;
+          double nearest = INFINITY;
+          for (const BoundaryLocation& f : Graph.nodes[id].footpoints)
+          {
+            if (f.g == foot.g && (f.point - stepped).norm() < nearest)
+            {
+              nearest = (f.point - stepped).norm();
+              foot = f;
+            }
+          }
+        }
         finish(id);
       }
       accepted = true;
