@@ -7,6 +7,7 @@
 // the seed that reproduces it.
 //
 //   exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v]
+//   exactmat_bench_random --star-scaling   (random stars of 1,000 … 30,000 edges, 3 seeds each)
 #include "brep/NormalisePieces.h"
 #include "common/InputError.h"
 #include "mat2d/Tracer.h"
@@ -15,6 +16,7 @@
 #include "shapes/RandomShapes.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -39,6 +41,51 @@ std::string shapeClass(const std::string& description)
     return "jittered regular polygon";
   return c;
 }
+// Random star polygons of growing size as drawn (3 seeds each): tracing and verification
+// time apart, and the exponent of the tracing time in the number of edges.
+int starScaling()
+{
+  std::printf("| edges | stars | verified | segments (mean) | tracing (s, mean) | verification (s, mean) | exponent (tracing) |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+  double previousEdges = 0.0, previousTrace = 0.0;
+  for (const int edges : { 1000, 3000, 10000, 30000 })
+  {
+    int verified = 0;
+    double segments = 0.0, trace = 0.0, verify = 0.0;
+    const int seeds = 3;
+    for (int seed = 1; seed <= seeds; ++seed)
+    {
+      RandomEngine rng(static_cast<unsigned long long>(seed));
+      const RandomShape s = randomStarPolygon(rng, edges);
+      try
+      {
+        const auto t0 = std::chrono::steady_clock::now();
+        const Boundary2D b = buildNormalised(curvePieces(s.curves));
+        const Generators g(b);
+        const MedialGraph graph = computeMAT2D(g);
+        const auto t1 = std::chrono::steady_clock::now();
+        const MAT2DVerification v = verifyMAT2D(g, graph);
+        const auto t2 = std::chrono::steady_clock::now();
+        verified += v.ok(1e-9) ? 1 : 0;
+        segments += static_cast<double>(graph.segments.size()) / seeds;
+        trace += std::chrono::duration<double>(t1 - t0).count() / seeds;
+        verify += std::chrono::duration<double>(t2 - t1).count() / seeds;
+      }
+      catch (const InputError& e)
+      {
+        std::printf("(%d edges, seed %d: %s)\n", edges, seed, e.what());
+      }
+    }
+    std::printf("| %d | %d | %d | %.0f | %.2f | %.2f |", edges, seeds, verified, segments, trace, verify);
+    if (previousEdges > 0.0)
+      std::printf(" %.2f", std::log(trace / previousTrace) / std::log(edges / previousEdges));
+    std::printf(" |\n");
+    std::fflush(stdout);
+    previousEdges = edges;
+    previousTrace = trace;
+  }
+  return 0;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -57,9 +104,11 @@ int main(int argc, char* argv[])
       maxEdges = std::atoi(argv[++i]);
     else if (a == "-v")
       verbose = true;
+    else if (a == "--star-scaling")
+      return starScaling();
     else
     {
-      std::fprintf(stderr, "usage: exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v]\n");
+      std::fprintf(stderr, "usage: exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v] | --star-scaling\n");
       return 2;
     }
   }
