@@ -87,10 +87,48 @@ Generators::Generators(const Boundary2D& boundary)
       List[g.next].startJunction = g.endJunction;
     }
   }
+  // The tree's items: an edge's box, or for a slanted straight edge the boxes of pieces
+  // of it (a radial spike's one box holds a triangle of empty space that a disk near the
+  // star's centre reaches: hundreds of false candidates a query). Each piece's box is
+  // padded by a few ulps, so it holds the edge's own evaluation of that stretch.
   std::vector<Box3> boxes;
-  for (const Edge2D& e : edges)
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e)
   {
-    boxes.push_back(e.curve.boundingBox());
+    const BezierCurve& c = edges[e].curve;
+    const Box3 whole = c.boundingBox();
+    const Vec3 extent = whole.sizes();
+    const double thin = std::min(extent.x(), extent.y()), thick = std::max(extent.x(), extent.y());
+    const bool line = c.degree() == 1 && c.homogeneousPoints()[0].w() == c.homogeneousPoints()[1].w();
+    // The empty space a straight edge's box holds reaches thin·thick/length from the edge;
+    // pieces keep that under Reach of the boundary's size (at most 32 of them). Short
+    // edges (saw teeth, a dense polygon's sides) stay one item, and so does every edge of
+    // a boundary of few: a query cannot have more false candidates than there are edges,
+    // and where every disk touches every edge (a regular polygon's centre) pieces only
+    // multiply the boxes to visit.
+    constexpr double Reach = 1e-2;
+    const double looseness = thick > 0.0 ? thin * thick / std::hypot(thin, thick) : 0.0;
+    const int pieces = line && edges.size() > 64
+      ? std::min(32, 1 + static_cast<int>(looseness / (Reach * size2D())))
+      : 1;
+    if (pieces == 1)
+    {
+      boxes.push_back(whole);
+      ItemEdge.push_back(e);
+      continue;
+    }
+    const Vec3 a = euclidean(c.homogeneousPoints()[0]), b = euclidean(c.homogeneousPoints()[1]);
+    const double pad = 8.0 * std::numeric_limits<double>::epsilon() * (a.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff());
+    for (int k = 0; k < pieces; ++k)
+    {
+      const double t0 = static_cast<double>(k) / pieces, t1 = static_cast<double>(k + 1) / pieces;
+      Box3 piece;
+      piece.extend(a + t0 * (b - a));
+      piece.extend(a + t1 * (b - a));
+      piece.min().array() -= pad;
+      piece.max().array() += pad;
+      boxes.push_back(piece.intersection(whole));
+      ItemEdge.push_back(e);
+    }
   }
   Tree.build(boxes);
 }
@@ -141,8 +179,21 @@ double Generators::distance(const Vec2& x) const
   const Vec3 q(x.x(), x.y(), 0.0);
   const auto& edges = Boundary->edges();
   double d = 0.0;
+  // An edge in pieces is asked once for each piece the search reaches: remember the last.
+  int last = -1;
+  double lastDistance = 0.0;
   Tree.nearest(
-    q, [&](int e) { return closestPoint(edges[e].curve, q).distance; }, &d);
+    q,
+    [&](int item) {
+      const int e = ItemEdge[item];
+      if (e != last)
+      {
+        last = e;
+        lastDistance = closestPoint(edges[e].curve, q).distance;
+      }
+      return lastDistance;
+    },
+    &d);
   return d;
 }
 
@@ -150,7 +201,14 @@ bool Generators::anyCloserThan(const Vec2& x, double radius) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);
   const auto& edges = Boundary->edges();
-  return Tree.anyWithin(q, radius, [&](int e) { return curveComesWithin(edges[e].curve, q, radius); });
+  int last = -1; // an edge's pieces, met one after another, are one question
+  return Tree.anyWithin(q, radius, [&](int item) {
+    const int e = ItemEdge[item];
+    if (e == last)
+      return false;
+    last = e;
+    return curveComesWithin(edges[e].curve, q, radius);
+  });
 }
 
 bool Generators::anyCloserThan(
@@ -160,7 +218,12 @@ bool Generators::anyCloserThan(
   const auto& edges = Boundary->edges();
   const int ea = List[touchA].kind == GeneratorKind::Edge ? List[touchA].edge : -1;
   const int eb = List[touchB].kind == GeneratorKind::Edge ? List[touchB].edge : -1;
-  return Tree.anyWithin(q, radius, [&](int e) {
+  int last = -1;
+  return Tree.anyWithin(q, radius, [&](int item) {
+    const int e = ItemEdge[item];
+    if (e == last)
+      return false;
+    last = e;
     if (e == ea)
       return curveComesWithin(edges[e].curve, q, radius, sa);
     if (e == eb)
@@ -178,7 +241,11 @@ std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double
   auto addUnique = [&](const BoundaryLocation& b) { out.push_back(b); };
   // A corner within the radius is an end of an edge within it: the tree's candidates
   // name every corner to look at (not all of them: a star polygon of n edges has n/2).
-  const std::vector<int> candidates = Tree.candidatesWithin(q, radius);
+  std::vector<int> candidates = Tree.candidatesWithin(q, radius);
+  for (int& item : candidates)
+    item = ItemEdge[item];
+  // Items come in increasing order and an edge's pieces are consecutive items.
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   std::vector<int> corners;
   for (int e : candidates)
     for (int c : { List[GeneratorOfEdge[e]].prev, List[GeneratorOfEdge[e]].next })

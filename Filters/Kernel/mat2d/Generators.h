@@ -99,6 +99,7 @@ private:
   std::vector<Generator> List;
   std::vector<int> CornerOfVertex, GeneratorOfEdge;
   BoundingVolumeHierarchy Tree;
+  std::vector<int> ItemEdge; ///< the edge of each of the tree's items (an edge or a piece of one)
 };
 
 } // namespace exactmat
