@@ -202,6 +202,37 @@ private:
 
   int addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps);
   int findNode(const Vec2& x, double tol) const;
+  /// The node nearest x within `reach` that `accept(node)` takes, or −1.
+  template <typename Accept>
+  int nearestNode(const Vec2& x, double reach, Accept&& accept) const
+  {
+    // The cells around x that a disk of radius `reach` meets (3 × 3 for reach ≤ a cell).
+    const double cell = NodeCell * L;
+    const long long k = std::max(1LL, static_cast<long long>(std::ceil(reach / cell)));
+    const long long ci = static_cast<long long>(std::floor(x.x() / cell));
+    const long long cj = static_cast<long long>(std::floor(x.y() / cell));
+    int best = -1;
+    double bestDistance = reach;
+    for (long long i = ci - k; i <= ci + k; ++i)
+    {
+      for (long long j = cj - k; j <= cj + k; ++j)
+      {
+        const auto it = NodeGrid.find(cellKey(i, j));
+        if (it == NodeGrid.end())
+          continue;
+        for (int n : it->second)
+        {
+          const double d = (Graph.nodes[n].sample.x - x).norm();
+          if (d <= bestDistance && accept(n))
+          {
+            bestDistance = d;
+            best = n;
+          }
+        }
+      }
+    }
+    return best;
+  }
   /// The node within `reach` of x (other than `exclude`) that touches the boundary where
   /// one of the fronts does (fa or fb, to 1e-9 of the size). Where a segment meets its end
   /// node at a grazing angle (next to an almost flat convex vertex) its fronts reach the
@@ -318,66 +349,17 @@ bool Tracer::curvatureOk(int g, const GeneratorPoint& at, double r) const
 
 int Tracer::findNode(const Vec2& x, double tol) const
 {
-  // tol ≤ 1e-6·L < one cell: the 3×3 cells around x hold every candidate.
-  const double cell = NodeCell * L;
-  const long long ci = static_cast<long long>(std::floor(x.x() / cell));
-  const long long cj = static_cast<long long>(std::floor(x.y() / cell));
-  int best = -1;
-  double bestDistance = tol;
-  for (long long i = ci - 1; i <= ci + 1; ++i)
-  {
-    for (long long j = cj - 1; j <= cj + 1; ++j)
-    {
-      const auto it = NodeGrid.find(cellKey(i, j));
-      if (it == NodeGrid.end())
-        continue;
-      for (int n : it->second)
-      {
-        const double d = (Graph.nodes[n].sample.x - x).norm();
-        if (d <= bestDistance)
-        {
-          bestDistance = d;
-          best = n;
-        }
-      }
-    }
-  }
-  return best;
+  return nearestNode(x, tol, [](int) { return true; });
 }
 
 int Tracer::nodeWithFeet(const Vec2& x, double reach, int exclude, const Vec2& fa, const Vec2& fb) const
 {
-  const double cell = NodeCell * L;
-  const long long k = static_cast<long long>(std::ceil(reach / cell));
-  const long long ci = static_cast<long long>(std::floor(x.x() / cell));
-  const long long cj = static_cast<long long>(std::floor(x.y() / cell));
-  auto touches = [&](const MedialNode& n) {
-    return std::any_of(n.footpoints.begin(), n.footpoints.end(), [&](const BoundaryLocation& f) {
+  return nearestNode(x, reach, [&](int n) {
+    const auto& feet = Graph.nodes[n].footpoints;
+    return n != exclude && std::any_of(feet.begin(), feet.end(), [&](const BoundaryLocation& f) {
       return (f.point - fa).norm() <= 1e-9 * L || (f.point - fb).norm() <= 1e-9 * L;
     });
-  };
-  int best = -1;
-  double bestDistance = reach;
-  for (long long i = ci - k; i <= ci + k; ++i)
-  {
-    for (long long j = cj - k; j <= cj + k; ++j)
-    {
-      const auto it = NodeGrid.find(cellKey(i, j));
-      if (it == NodeGrid.end())
-        continue;
-      for (int n : it->second)
-      {
-        const MedialNode& node = Graph.nodes[n];
-        const double d = (node.sample.x - x).norm();
-        if (n != exclude && d <= bestDistance && touches(node))
-        {
-          bestDistance = d;
-          best = n;
-        }
-      }
-    }
-  }
-  return best;
+  });
 }
 
 int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<BoundaryLocation> fps)
