@@ -4,6 +4,7 @@
 // random domains, seeded, are verified independently of the tracer.
 #include "brep/NormalisePieces.h"
 #include "common/InputError.h"
+#include "geometry/ClosestPoint.h"
 #include "mat2d/Tracer.h"
 #include "mat2d/Verification.h"
 #include "shapes/Catalogue.h"
@@ -399,4 +400,55 @@ TEST(MAT2DRobustness, TenThousandEdgeStar)
   const RandomShape s = randomStarPolygon(rng, 10000);
   SCOPED_TRACE(s.description);
   EXPECT_TRUE(verified(compute(s.curves)));
+}
+
+// The box tree holds a slanted straight edge of a large boundary as pieces: its answers
+// must be those of every edge asked exactly. A turned 2,000-edge star, probed at points
+// all over its box: the nearest distance equals the minimum over all edges, a disk just
+// larger than it reaches the boundary and one just smaller does not, and the footpoints
+// of that disk include the nearest edge.
+TEST(MAT2DRobustness, PiecedBoxTreeAnswersAsEveryEdge)
+{
+  RandomEngine rng(4);
+  ShapeMotion turned;
+  turned.angle = 0.7;
+  const Boundary2D b = buildNormalised(curvePieces(turned.apply(randomStarPolygon(rng, 2000).curves)));
+  const Generators g(b);
+  const auto& edges = b.edges();
+  Box3 box;
+  for (const Edge2D& e : edges)
+    box.extend(e.curve.boundingBox());
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double size = g.size2D();
+  int failures = 0;
+  for (int i = 0; i < 400; ++i)
+  {
+    const Vec2 x(box.min().x() + unit(rng) * box.sizes().x(), box.min().y() + unit(rng) * box.sizes().y());
+    const Vec3 q(x.x(), x.y(), 0.0);
+    double exact = std::numeric_limits<double>::infinity();
+    Vec2 foot = Vec2::Zero();
+    for (const Edge2D& e : edges)
+    {
+      const CurveFootpoint c = closestPoint(e.curve, q);
+      if (c.distance < exact)
+      {
+        exact = c.distance;
+        foot = Vec2(c.point.x(), c.point.y());
+      }
+    }
+    const double d = g.distance(x);
+    const bool within = g.anyCloserThan(x, exact * (1.0 + 1e-9) + 1e-15);
+    const bool beyond = !g.anyCloserThan(x, exact * (1.0 - 1e-9));
+    bool footOnNearest = false; // (a corner may stand for an edge's end)
+    for (const BoundaryLocation& f : g.footpointsWithin(x, exact * (1.0 + 1e-9) + 1e-15))
+      footOnNearest = footOnNearest || (f.point - foot).norm() <= 1e-9 * size;
+    if (d != exact || !within || !beyond || !footOnNearest)
+    {
+      ++failures;
+      ADD_FAILURE() << "probe " << i << " at (" << x.x() << ", " << x.y() << "): tree " << d << ", every edge "
+                    << exact << ", within " << within << ", beyond " << beyond;
+      if (failures > 5)
+        break;
+    }
+  }
 }
