@@ -421,6 +421,33 @@ TEST(MAT25D, ElongatedExtrusionsAreVerified)
   }
 }
 
+// The verification's touchpoint search on sides far longer or shorter than the ball (found
+// when the 2D MAT's samples moved, 2026-11-25): a ball 0.22 across 0.22 from the end of a
+// side 1e6 long (Newton in a piece 244 long, 1e6 from the origin, stopped 1e-10 short: the rounding of its coordinates),
+// and a ball 5.6e-8 across in a plate 1e-6 thin, 1 from the origin (Newton's end test asked
+// for 1e-9 of the ball's size, below its coordinates' rounding). Both balls touch three /
+// two faces by construction (a seam point of the long bar; a sheet point between the
+// bottom cap and the side of the thin plate).
+TEST(MAT25D, TouchpointsOnSidesFarLongerOrShorterThanTheBall)
+{
+  const auto profile = Boundary2D::build(curvePieces(makeShape("plate-with-holes").curves));
+  const SweepMap long1e6(profile, extrusion(1e6)), thin1e6(profile, extrusion(1e-6));
+  const SweptBoundary bar(profile, long1e6);
+  const Vec3 seam(1.264928133635761, 0.77748919089680724, 999999.77748919092);
+  const double seamRadius = 0.22251080910319279;
+  EXPECT_EQ(bar.touchpoints(seam, seamRadius * (1.0 + 2e-9) + 1e-15 * bar.size()).size(), 3u);
+  const SweptBoundary plate(profile, thin1e6);
+  const Vec3 sheet(-1.0031243469493012, 0.39998785344131138, 5.5555555555555555e-08);
+  const double sheetRadius = 5.5555555555555555e-08;
+  EXPECT_EQ(plate.touchpoints(sheet, sheetRadius * (1.0 + 2e-9) + 1e-15 * plate.size()).size(), 2u);
+  // Every point of both, at the CLI's sheet resolution.
+  for (const double length : { 1e6, 1e-6 })
+  {
+    const auto r = run(makeShape("plate-with-holes").curves, extrusion(length), MAT25DOptions{ 0.02, {} });
+    expectVerified(*r, "plate with holes extruded by " + std::to_string(length) + " at resolution 0.02");
+  }
+}
+
 // Short spans on free-form profiles, extruded and revolved (2·asin(r/x) > angle), against
 // the exact solid, and the brute-force junction search.
 TEST(MAT25D, ShortSpansAreVerified)

@@ -649,8 +649,10 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
     {
       break;
     }
-    if (it == 29 && !(std::abs(fu) <= 1e-9 * scale * s.su.norm() &&
-                      std::abs(fv) <= 1e-9 * scale * s.sv.norm()))
+    // (r is the difference of two points and known only to their coordinates' rounding:
+    // a ball 5e-8 across in a plate 1e-6 thin, 1 from the origin, has r to 2e-9 of itself.)
+    const double reach = 1e-9 * scale + 1e-14 * (s.point.norm() + q.norm());
+    if (it == 29 && !(std::abs(fu) <= reach * s.su.norm() && std::abs(fv) <= reach * s.sv.norm()))
     {
       return false;
     }
@@ -940,8 +942,12 @@ std::vector<PatchFootpoint> elongatedFootpoints(
         {
           const SurfaceDerivatives d = patch.derivatives(f.u, f.v);
           const Vec3 r = d.point - query;
-          const bool stationary = (!cutU || std::abs(r.dot(d.su)) <= 1e-9 * r.norm() * d.su.norm()) &&
-            (!cutV || std::abs(r.dot(d.sv)) <= 1e-9 * r.norm() * d.sv.norm());
+          // (r is known only to the rounding of the coordinates it is the difference of: a
+          // bar 1e6 long has its foot's along-coordinate off by 1e-10, which is not small
+          // against 1e-9 of a short distance across the cut.)
+          const double slack = 1e-9 * r.norm() + 1e-14 * (d.point.norm() + query.norm());
+          const bool stationary = (!cutU || std::abs(r.dot(d.su)) <= slack * d.su.norm()) &&
+            (!cutV || std::abs(r.dot(d.sv)) <= slack * d.sv.norm());
           if (!stationary && !f.continuum)
             continue;
           const bool onBorder = f.u == 0.0 || f.u == 1.0 || f.v == 0.0 || f.v == 1.0;

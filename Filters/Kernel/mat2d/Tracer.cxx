@@ -25,6 +25,28 @@ constexpr double ParamEps = 1e-12;
 /// traced, not skipped as covered.
 constexpr double CoverageSlop = 1e-11;
 
+/// How far the medial curve strays from the chord between two of its samples, as the
+/// step control needs it: positions and radii are the points (x, y, r) of the MAT
+/// transform, `mid` the curve's point between them at the middle of the *held parameter*.
+/// That point need not be the chord's middle: into a centre-of-curvature end the MAT point
+/// moves like the square of the footpoint parameter, so the distance to the chord's
+/// midpoint measures the parameterisation, not the curve's deviation (the ellipse's ends
+/// took 91 samples so). The deviation is measured across the chord, at the fraction τ of
+/// the way the middle point projects to, and scaled to the chord's largest by 1/(4τ(1−τ)),
+/// exact for an arc of a parabola, i.e. for any smooth arc short against its curvature.
+/// (Position and radius deviations are added, as the chord error always was.)
+double chordDeviation(const Vec2& x0, double r0, const Vec2& xm, double rm, const Vec2& x1, double r1)
+{
+  const Eigen::Vector3d p0(x0.x(), x0.y(), r0), pm(xm.x(), xm.y(), rm), p1(x1.x(), x1.y(), r1);
+  const Eigen::Vector3d chord = p1 - p0;
+  const double length2 = chord.squaredNorm();
+  if (!(length2 > 0.0))
+    return (pm - p0).head<2>().norm() + std::abs(pm(2) - p0(2));
+  const double tau = std::clamp((pm - p0).dot(chord) / length2, 0.05, 0.95);
+  const Eigen::Vector3d across = pm - p0 - tau * chord;
+  return (across.head<2>().norm() + std::abs(across(2))) / (4.0 * tau * (1.0 - tau));
+}
+
 struct Pending
 {
   int node;
@@ -919,8 +941,7 @@ void Tracer::trace(const Pending& p)
           0.5 * (y.sb + (lmpc.g == b.g ? lmpc.s : y.sb)), 0.5 * (y.r + 1.0 / kappa) };
         const int hold = (lmpc.g == a.g) ? 0 : 1;
         chordOk = B.correct(ym, hold, 1e-13 * L) &&
-          (B.point(ym) - 0.5 * (x0 + centre)).norm() + std::abs(ym.r - 0.5 * (y.r + 1.0 / kappa)) <=
-            O.tolerance * L;
+          chordDeviation(x0, y.r, B.point(ym), ym.r, centre, 1.0 / kappa) <= O.tolerance * L;
       }
       if (chordOk && !checkEveryStep && sinceCheck > 0 && !emptyDisk(x0, y.r))
       {
@@ -1054,14 +1075,14 @@ void Tracer::trace(const Pending& p)
       double resize = 0.5;
       if (ok && !O.fixedStep && !joining)
       {
-        // Chord error: the true MAT point halfway against the chord's midpoint.
+        // Chord error: the MAT point halfway (in the held unknown) against the chord.
         BisectorState ym{ 0.5 * (y.sa + y1.sa), 0.5 * (y.sb + y1.sb), 0.5 * (y.r + y1.r) };
         const int mid = fixed;
         GeneratorPoint gam;
         if (B.correct(ym, mid, solveTol, &gam))
         {
           const Vec2 xm = gam.p + ym.r * gam.n;
-          const double err = (xm - 0.5 * (x0 + x1)).norm() + std::abs(ym.r - 0.5 * (y.r + y1.r));
+          const double err = chordDeviation(x0, y.r, xm, ym.r, x1, y1.r);
           resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
           if (err > tolerance)
             ok = false;
