@@ -422,7 +422,7 @@ TEST(MAT25D, ElongatedExtrusionsAreVerified)
 }
 
 // The verification's touchpoint search on sides far longer or shorter than the ball (found
-// when the 2D MAT's samples moved, 2026-11-25): a ball 0.22 across 0.22 from the end of a
+// when the 2D MAT's samples moved, 2026-11-25/26): a ball 0.22 across 0.22 from the end of a
 // side 1e6 long (Newton in a piece 244 long, 1e6 from the origin, stopped 1e-10 short: the rounding of its coordinates),
 // and a ball 5.6e-8 across in a plate 1e-6 thin, 1 from the origin (Newton's end test asked
 // for 1e-9 of the ball's size, below its coordinates' rounding). Both balls touch three /
@@ -440,6 +440,12 @@ TEST(MAT25D, TouchpointsOnSidesFarLongerOrShorterThanTheBall)
   const Vec3 sheet(-1.0031243469493012, 0.39998785344131138, 5.5555555555555555e-08);
   const double sheetRadius = 5.5555555555555555e-08;
   EXPECT_EQ(plate.touchpoints(sheet, sheetRadius * (1.0 + 2e-9) + 1e-15 * plate.size()).size(), 2u);
+  // A sheet point of the same plate whose ball meets the side at a smooth junction of the
+  // profile: feet 4e-12 apart either side of it, one contact (the valley between them lies
+  // outside the ball by 1e-16, the rounding of the distances).
+  const Vec3 junction(0.86403803132848922, -0.4999999999959599, 5.5555555555555552e-07);
+  const double junctionRadius = 4.4444444444444444e-07;
+  EXPECT_EQ(plate.touchpoints(junction, junctionRadius * (1.0 + 2e-9) + 1e-15 * plate.size()).size(), 2u);
   // Every point of both, at the CLI's sheet resolution.
   for (const double length : { 1e6, 1e-6 })
   {

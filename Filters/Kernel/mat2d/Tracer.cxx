@@ -170,23 +170,32 @@ public:
   }
 
   /// A parameter of g not covered (the middle of the largest gap), or NaN.
-  double uncovered(int g) const
+  /// The largest stretch of generator g no front has swept (longer than 1e-6 of its
+  /// parameter): true and its ends, or false.
+  bool uncovered(int g, double& from, double& to) const
   {
     std::vector<std::pair<double, double>> v = Intervals[g];
     std::sort(v.begin(), v.end());
-    double end = 0.0, bestLen = 1e-6, best = NaN;
+    double end = 0.0, bestLen = 1e-6;
+    bool found = false;
     for (const auto& [lo, hi] : v)
     {
       if (lo - end > bestLen)
       {
         bestLen = lo - end;
-        best = 0.5 * (lo + end);
+        from = end;
+        to = lo;
+        found = true;
       }
       end = std::max(end, hi);
     }
     if (1.0 - end > bestLen)
-      best = 0.5 * (1.0 + end);
-    return best;
+    {
+      from = end;
+      to = 1.0;
+      found = true;
+    }
+    return found;
   }
 
 private:
@@ -287,7 +296,9 @@ private:
   double diskMargin(double r) const;
   bool curvatureOk(int g, double s, double r) const;
   bool curvatureOk(int g, const GeneratorPoint& at, double r) const; ///< g evaluated already
-  void startAt(int g, double s);
+  /// A node at the maximal disk touching the boundary at (g, s), its wedges queued; false
+  /// when that disk touches there only (the osculating disk at a curvature extremum).
+  bool startAt(int g, double s);
   BoundaryLocation location(int g, double s) const;
   // The LMPC between the fronts when they close in on each other along one smooth run.
   using Stretch = std::vector<std::pair<int, std::pair<double, double>>>;
@@ -645,15 +656,31 @@ bool Tracer::lmpcBetween(
         bestS = s;
       }
     }
+    // One new evaluation per round (the other inner point is kept), down to 1e-10 of the
+    // parameter: the centre of curvature is stationary at the maximum, so it moves by the
+    // square of that (and the curvature's rounding hides the peak below ~1e-8 anyway).
     double l = std::max(lo, bestS - (hi - lo) / n), h = std::min(hi, bestS + (hi - lo) / n);
     const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
-    for (int it = 0; it < 60 && h - l > 1e-15; ++it)
+    double m1 = h - phi * (h - l), m2 = l + phi * (h - l);
+    double k1 = G.evaluate(g, m1).curvature, k2 = G.evaluate(g, m2).curvature;
+    for (int it = 0; it < 60 && h - l > 1e-10; ++it)
     {
-      const double m1 = h - phi * (h - l), m2 = l + phi * (h - l);
-      if (G.evaluate(g, m1).curvature < G.evaluate(g, m2).curvature)
+      if (k1 < k2)
+      {
         l = m1;
+        m1 = m2;
+        k1 = k2;
+        m2 = l + phi * (h - l);
+        k2 = G.evaluate(g, m2).curvature;
+      }
       else
+      {
         h = m2;
+        m2 = m1;
+        k2 = k1;
+        m1 = h - phi * (h - l);
+        k1 = G.evaluate(g, m1).curvature;
+      }
     }
     const double s = 0.5 * (l + h);
     const double c = G.evaluate(g, s).curvature;
@@ -1427,38 +1454,33 @@ void Tracer::trace(const Pending& p)
   reportProgress();
 }
 
-void Tracer::startAt(int g, double s)
+bool Tracer::startAt(int g, double s)
 {
-  // Shrinking ball (Ma, Bae & Choi): the maximal disk touching the boundary at p.
+  // Shrinking ball (Ma, Bae & Choi): the maximal disk touching the boundary at p. Every
+  // footpoint q inside the disk bounds the maximal radius by that of the disk through q
+  // tangent at p, |q − p|² / (2 (q − p)·n); the smallest of them is the next radius (one
+  // query per round: the first, of the domain's size, asks for the nearest feet only).
   const GeneratorPoint p = G.evaluate(g, s);
   double r = L;
   Vec2 x = p.p + r * p.n;
   for (int it = 0; it < 200; ++it)
   {
     x = p.p + r * p.n;
-    const auto near = G.footpointsWithin(x, G.distance(x) * (1.0 + 1e-12) + 1e-12 * L);
-    const BoundaryLocation* q = nullptr;
-    for (const BoundaryLocation& f : near)
+    const double reach = it == 0 ? G.distance(x) : r;
+    double next = r;
+    for (const BoundaryLocation& f : G.footpointsWithin(x, reach * (1.0 + 1e-12) + 1e-12 * L))
     {
-      if ((f.point - p.p).norm() > 1e-9 * L)
-      {
-        q = &f;
-        break;
-      }
+      const Vec2 d = f.point - p.p;
+      const double denominator = 2.0 * d.dot(p.n);
+      if (d.norm() > 1e-9 * L && denominator > 0.0)
+        next = std::min(next, d.squaredNorm() / denominator);
     }
-    if (!q)
-      break; // only p itself is closest: the disk is maximal
-    const Vec2 d = q->point - p.p;
-    const double denominator = 2.0 * d.dot(p.n);
-    if (!(denominator > 0.0))
-      break;
-    const double next = d.squaredNorm() / denominator;
-    if (std::abs(next - r) <= 1e-15 * L)
-    {
-      r = next;
-      break;
-    }
+    if (!(next < r))
+      break; // only p, or feet on the circle itself: the disk is maximal
+    const bool settled = r - next <= 1e-15 * L;
     r = next;
+    if (settled)
+      break;
   }
   // The iteration may stop short (no second footpoint found where rounding hides it, a
   // near-circle): make sure the disk is empty. Disks touching at p are nested, so
@@ -1485,11 +1507,7 @@ void Tracer::startAt(int g, double s)
   std::fprintf(stderr, "\n");
 #endif
   if (fps.size() < 2 && !(fps.size() == 1 && fps.front().continuum))
-  {
-    fail("2D MAT: the maximal disk touching ", G[g].kind == GeneratorKind::Edge ? "edge " : "corner ",
-      g, " at ", G.describe(p.p), " touches the boundary only there (", fps.size(),
-      " footpoint); no segment can start from it");
-  }
+    return false; // the osculating disk: p is a curvature extremum (the caller moves on)
   const bool circle = std::all_of(fps.begin(), fps.end(), [](const BoundaryLocation& f) { return f.continuum; });
   if (circle && !fps.empty())
   {
@@ -1498,10 +1516,11 @@ void Tracer::startAt(int g, double s)
     (void)id;
     for (const BoundaryLocation& f : fps)
       Cover.cover(f.g, 0.0, 1.0, -1);
-    return;
+    return true;
   }
   const int id = addNode(x, r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::CycleJoint, fps);
   spawnWedges(id);
+  return true;
 }
 
 void Tracer::reportProgress()
@@ -1744,21 +1763,25 @@ MedialGraph Tracer::run()
       trace(p);
     }
     int g = -1;
-    double s = NaN;
+    double from = NaN, to = NaN;
     for (int k = 0; k < G.size() && g < 0; ++k)
-    {
-      if (G[k].kind != GeneratorKind::Edge)
-        continue;
-      const double u = Cover.uncovered(k);
-      if (!std::isnan(u))
-      {
+      if (G[k].kind == GeneratorKind::Edge && Cover.uncovered(k, from, to))
         g = k;
-        s = u;
-      }
-    }
     if (g < 0)
       break;
-    startAt(g, s);
+    // The middle of the stretch first. A symmetric arc's middle is its curvature's
+    // extremum, where the maximal disk may be the osculating one, touching there only (a
+    // centre-of-curvature end, no start): then places off the middle.
+    bool started = false;
+    for (const double f : { 0.5, 0.382, 0.618, 0.25, 0.75 })
+      if ((started = startAt(g, from + f * (to - from))))
+        break;
+    if (!started)
+    {
+      const double s = from + 0.5 * (to - from);
+      fail("2D MAT: the maximal disks touching edge ", g, " at ", G.describe(G.evaluate(g, s).p),
+        " and at four other places of its untraced stretch touch the boundary only there; no segment can start from them");
+    }
     if (Queue.empty() && Graph.nodes.back().type != MedialPointType::CircleCentre)
     {
       fail("2D MAT: no segment could be started from boundary generator ", g);

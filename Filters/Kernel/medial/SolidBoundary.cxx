@@ -46,7 +46,10 @@ std::vector<SolidBoundary::Contact> SolidBoundary::distinctContacts(
     }
     // The valley test uses the ball's own radius (the nearest minimum), not the counting
     // tolerance: near an osculating point two true touchpoints are only a hair apart.
-    const double valley = minima.front().distance + 1e-12 * scale;
+    // Plus the rounding of the distances themselves, differences of coordinates of x's
+    // magnitude: a ball 4e-7 across near the origin's unit has two feet either side of a
+    // smooth junction 4e-12 apart, the valley between them "outside" by 1e-16.
+    const double valley = minima.front().distance + 1e-12 * scale + 1e-15 * x.norm();
     for (const Contact& q : out)
       keep = keep && !sameContact(x, valley, q.point, m.point, merge);
     if (keep)

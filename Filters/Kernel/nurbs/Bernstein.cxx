@@ -5,37 +5,6 @@
 namespace exactmat
 {
 
-namespace
-{
-// Pascal's triangle up to the largest degree any product of polynomials here reaches.
-constexpr int BinomialRows = 128;
-struct BinomialTable
-{
-  double c[BinomialRows][BinomialRows] = {};
-  BinomialTable()
-  {
-    for (int n = 0; n < BinomialRows; ++n)
-    {
-      c[n][0] = c[n][n] = 1.0;
-      for (int k = 1; k < n; ++k)
-      {
-        c[n][k] = c[n - 1][k - 1] + c[n - 1][k];
-      }
-    }
-  }
-};
-} // namespace
-
-double binomial(int n, int k)
-{
-  static const BinomialTable table;
-  if (k < 0 || k > n || n >= BinomialRows)
-  {
-    return 0.0;
-  }
-  return table.c[n][k];
-}
-
 void bernsteinWithDerivatives(int p, double t, double* out)
 {
   // Build the triangle of Bernstein values degree by degree and keep the last three rows:
