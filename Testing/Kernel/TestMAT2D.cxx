@@ -299,6 +299,33 @@ TEST(MAT2D, PolylineIsWithinTheToleranceOfTheMedialCurve)
   }
 }
 
+// The verification measures the true error of a wrong point, whichever way it is wrong: a
+// radius too large (the nearest footpoint is inside the point's reach: its distance is
+// taken), too small (no footpoint within reach: the global distance query answers), or a
+// centre moved off the axis. It takes the distance from the footpoints it counts when it
+// can, so this pins that it is still the global distance.
+TEST(MAT2DVerification, MeasuresTheErrorOfAWrongPoint)
+{
+  for (const double wrong : { 1e-3, -1e-3, 1e-7, -1e-7 })
+  {
+    TracedMAT r = runShape("blob");
+    const double L = r.boundary.diagonal();
+    MedialSample& s = r.graph.segments[0].samples[r.graph.segments[0].samples.size() / 2];
+    s.radius += wrong * L;
+    const MAT2DVerification v = verifyMAT2D(*r.generators, r.graph);
+    EXPECT_NEAR(v.maxDistanceError, std::abs(wrong), 1e-12) << wrong;
+  }
+  TracedMAT r = runShape("ellipse");
+  const double L = r.boundary.diagonal();
+  MedialSample& s = r.graph.segments[0].samples[10];
+  const double before = r.generators->distance(s.x);
+  s.x.y() += 1e-4 * L; // off the major axis: nearer one side
+  const double truth = std::abs(r.generators->distance(s.x) - s.radius) / L;
+  EXPECT_GT(truth, 1e-6);
+  EXPECT_NEAR(before, s.radius, 1e-14 * L);
+  EXPECT_NEAR(verifyMAT2D(*r.generators, r.graph).maxDistanceError, truth, 1e-15);
+}
+
 TEST(MAT2D, RunawayTracingIsAnErrorNotAHang)
 {
   MAT2DOptions o;

@@ -37,10 +37,19 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
     for (std::size_t k = begin; k < end; ++k)
     {
       const MedialPoint3D& p = mat.points[chosen[k]];
-      error[k] = std::abs(boundary.distance(p.x) - p.radius) / size;
+      // A point whose touchpoints are counted: the nearest of them is the global distance
+      // whenever that is within their reach (the same exact search, asked once).
+      double distance = INFINITY;
       if (p.contacts > 0)
-        count[k] = static_cast<int>(
-          boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size).size());
+      {
+        const auto contacts = boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size);
+        count[k] = static_cast<int>(contacts.size());
+        for (const SolidBoundary::Contact& c : contacts)
+          distance = std::min(distance, c.distance);
+      }
+      if (!(distance < INFINITY))
+        distance = boundary.distance(p.x);
+      error[k] = std::abs(distance - p.radius) / size;
     }
   });
   for (std::size_t k = 0; k < chosen.size(); ++k)
