@@ -169,7 +169,6 @@ public:
     return total;
   }
 
-  /// A parameter of g not covered (the middle of the largest gap), or NaN.
   /// The largest stretch of generator g no front has swept (longer than 1e-6 of its
   /// parameter): true and its ends, or false.
   bool uncovered(int g, double& from, double& to) const
