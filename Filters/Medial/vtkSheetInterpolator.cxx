@@ -207,32 +207,66 @@ bool isSweptSheet(MedialElementType type)
 }
 } // namespace
 
-void vtkSheetInterpolator::PartProgress(double fraction)
+struct vtkSheetInterpolator::Figures
 {
-  // Within one solid of a collection: its share of the whole, so progress only grows.
-  this->UpdateProgress(this->PartRange[0] + fraction * (this->PartRange[1] - this->PartRange[0]));
+  int sheets = 0, interpolated = 0, failedSheets = 0, triangles = 0, verifiedPoints = 0, mismatches = 0;
+  int fitPatches = 0, aboveFit = 0;
+  double deviation = 0.0, interpolationSeconds = 0.0, verificationSeconds = 0.0, coverage = 0.0,
+         fitError = 0.0, fitSeconds = 0.0, verifiedError = 0.0;
+  bool passed = false;
+  /// Raised while the solid was filled, emitted by the filter's own thread afterwards
+  /// (observers such as ParaView's must not be called from workers).
+  std::vector<std::string> warnings;
+
+  /// A collection's sums: counts and times add up, errors and shortfalls take the largest.
+  void add(const Figures& o)
+  {
+    sheets += o.sheets;
+    interpolated += o.interpolated;
+    failedSheets += o.failedSheets;
+    triangles += o.triangles;
+    verifiedPoints += o.verifiedPoints;
+    mismatches += o.mismatches;
+    fitPatches += o.fitPatches;
+    aboveFit += o.aboveFit;
+    deviation = std::max(deviation, o.deviation);
+    coverage = std::max(coverage, o.coverage);
+    fitError = std::max(fitError, o.fitError);
+    verifiedError = std::max(verifiedError, o.verifiedError);
+    interpolationSeconds += o.interpolationSeconds;
+    verificationSeconds += o.verificationSeconds;
+    fitSeconds += o.fitSeconds;
+  }
+};
+
+void vtkSheetInterpolator::PublishFigures(const Figures& f)
+{
+  this->NumberOfSheets = f.sheets;
+  this->NumberOfInterpolatedSheets = f.interpolated;
+  this->NumberOfFailedSheets = f.failedSheets;
+  this->NumberOfTriangles = f.triangles;
+  this->NumberOfVerifiedPoints = f.verifiedPoints;
+  this->NumberOfTouchpointMismatches = f.mismatches;
+  this->NumberOfFitPatches = f.fitPatches;
+  this->NumberOfSheetsAboveFitTolerance = f.aboveFit;
+  this->MaximumDeviation = f.deviation;
+  this->MaximumCoverageShortfall = f.coverage;
+  this->MaximumFitError = f.fitError;
+  this->MaximumVerifiedError = f.verifiedError;
+  this->InterpolationSeconds = f.interpolationSeconds;
+  this->VerificationSeconds = f.verificationSeconds;
+  this->FitSeconds = f.fitSeconds;
+  this->VerificationPassed = f.passed;
 }
 
-void vtkSheetInterpolator::ResetFigures()
-{
-  this->NumberOfFitPatches = this->NumberOfSheetsAboveFitTolerance = 0;
-  this->MaximumFitError = this->FitSeconds = 0.0;
-  this->NumberOfSheets = this->NumberOfInterpolatedSheets = this->NumberOfFailedSheets = 0;
-  this->NumberOfTriangles = this->NumberOfVerifiedPoints = this->NumberOfTouchpointMismatches = 0;
-  this->MaximumDeviation = this->InterpolationSeconds = this->VerificationSeconds = 0.0;
-  this->MaximumCoverageShortfall = 0.0;
-  this->MaximumVerifiedError = 0.0;
-  this->VerificationPassed = false;
-}
-
-std::string vtkSheetInterpolator::FillPart(
-  vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits)
+std::string vtkSheetInterpolator::FillPart(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output,
+  vtkUnstructuredGrid* fits, Figures& figures, const std::function<void(double)>& progress) const
 {
   fits->Initialize();
   std::string error;
   try
   {
-    this->Interpolate(mat, boundary, output, fits);
+    this->Interpolate(mat, boundary, output, fits, figures, progress);
     return error;
   }
   catch (const InputError& e)
@@ -255,7 +289,7 @@ std::string vtkSheetInterpolator::FillPart(
 int vtkSheetInterpolator::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  this->ResetFigures();
+  this->PublishFigures(Figures{});
   this->NumberOfParts = this->NumberOfFailedParts = 0;
   vtkDataObject* matObject = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* boundaryObject = vtkDataObject::GetData(inputVector[1]);
@@ -295,13 +329,20 @@ int vtkSheetInterpolator::RequestData(
     }
   }
   this->NumberOfParts = 1;
-  const std::string error = this->FillPart(mat, boundary, output, fits);
+  Figures figures;
+  const std::string error =
+    this->FillPart(mat, boundary, output, fits, figures, [this](double f) { this->UpdateProgress(f); });
+  for (const std::string& warning : figures.warnings)
+    vtkWarningMacro(<< warning);
   if (!error.empty())
   {
+    figures.passed = false;
+    this->PublishFigures(figures);
     this->NumberOfFailedParts = 1;
     vtkErrorMacro(<< error);
     return 0;
   }
+  this->PublishFigures(figures);
   this->NumberOfFailedParts = this->VerificationPassed ? 0 : 1;
   this->UpdateProgress(1.0);
   return 1;
@@ -314,29 +355,21 @@ int vtkSheetInterpolator::RequestCollection(vtkCompositeDataSet* mats, vtkCompos
   output->CopyStructure(mats);
   fits->CopyStructure(mats);
   const std::vector<CollectionPart> parts = collectionParts(mats);
-  std::vector<PartRow> rows;
-  // The figures each part adds to the summary (and, summed, to the getters).
-  struct Sums
-  {
-    int sheets = 0, interpolated = 0, failedSheets = 0, triangles = 0, verified = 0, mismatches = 0;
-    int fitPatches = 0, aboveFit = 0;
-    double deviation = 0.0, interpolation = 0.0, verification = 0.0, coverage = 0.0, fitError = 0.0,
-           fitSeconds = 0.0;
-  } sums;
-  for (size_t k = 0; k < parts.size(); ++k)
-  {
+  const int n = static_cast<int>(parts.size());
+  std::vector<PartRow> rows(n);
+  std::vector<Figures> figures(n);
+  std::vector<vtkSmartPointer<vtkPolyData>> partOutputs(n);
+  std::vector<vtkSmartPointer<vtkUnstructuredGrid>> partFits(n);
+  auto fill = [&](int k) {
     const CollectionPart& part = parts[k];
     const auto t0 = std::chrono::steady_clock::now();
-    PartRow row;
+    PartRow& row = rows[k];
     row.key = part.place.key();
     row.name = part.name;
-    auto partOutput = vtkSmartPointer<vtkPolyData>::New();
-    auto partFits = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    partOutputs[k] = vtkSmartPointer<vtkPolyData>::New();
+    partFits[k] = vtkSmartPointer<vtkUnstructuredGrid>::New();
     auto* mat = vtkPolyData::SafeDownCast(part.data);
     auto* boundary = vtkUnstructuredGrid::SafeDownCast(partAt(boundaries, part.place));
-    this->ResetFigures();
-    this->PartRange[0] = static_cast<double>(k) / static_cast<double>(parts.size());
-    this->PartRange[1] = static_cast<double>(k + 1) / static_cast<double>(parts.size());
     if (mat && mat->GetNumberOfPoints() == 0 && distributed)
       row.status = -1; // another rank's part (or one whose MAT failed on every rank)
     else if (!mat || mat->GetNumberOfPoints() == 0)
@@ -352,94 +385,93 @@ int vtkSheetInterpolator::RequestCollection(vtkCompositeDataSet* mats, vtkCompos
     }
     else
     {
-      row.message = this->FillPart(mat, boundary, partOutput, partFits);
+      Figures& f = figures[k];
+      row.message = this->FillPart(mat, boundary, partOutputs[k], partFits[k], f, [](double) {});
       if (!row.message.empty())
+      {
         row.status = 3;
+        f = Figures{}; // a failed part adds nothing to the sums
+      }
       else
       {
-        auto* report = vtkStringArray::SafeDownCast(partOutput->GetFieldData()->GetAbstractArray(arrays::VerificationReport));
+        auto* report =
+          vtkStringArray::SafeDownCast(partOutputs[k]->GetFieldData()->GetAbstractArray(arrays::VerificationReport));
         row.message = report && report->GetNumberOfValues() > 0 ? report->GetValue(0) : std::string();
-        row.status = !this->VerifyOutput ? 1 : this->VerificationPassed ? 0 : 2;
-        row.maximumError = this->MaximumVerifiedError;
-        PartResult figures;
-        figures.count("NumberOfSheets", this->NumberOfSheets);
-        figures.count("NumberOfInterpolatedSheets", this->NumberOfInterpolatedSheets);
-        figures.count("NumberOfFailedSheets", this->NumberOfFailedSheets);
-        figures.count("NumberOfTriangles", this->NumberOfTriangles);
-        figures.count("NumberOfFitPatches", this->NumberOfFitPatches);
-        figures.count("NumberOfSheetsAboveFitTolerance", this->NumberOfSheetsAboveFitTolerance);
-        figures.measure("MaximumFitError", this->MaximumFitError);
-        figures.measure("MaximumCoverageShortfall", this->MaximumCoverageShortfall);
-        figures.measure("InterpolationSeconds", this->InterpolationSeconds);
-        figures.measure("VerificationSeconds", this->VerificationSeconds);
-        row.figures = figures.figures;
-        sums.sheets += this->NumberOfSheets;
-        sums.interpolated += this->NumberOfInterpolatedSheets;
-        sums.failedSheets += this->NumberOfFailedSheets;
-        sums.triangles += this->NumberOfTriangles;
-        sums.verified += this->NumberOfVerifiedPoints;
-        sums.mismatches += this->NumberOfTouchpointMismatches;
-        sums.fitPatches += this->NumberOfFitPatches;
-        sums.aboveFit += this->NumberOfSheetsAboveFitTolerance;
-        sums.deviation = std::max(sums.deviation, this->MaximumDeviation);
-        sums.coverage = std::max(sums.coverage, this->MaximumCoverageShortfall);
-        sums.fitError = std::max(sums.fitError, this->MaximumFitError);
-        sums.interpolation += this->InterpolationSeconds;
-        sums.verification += this->VerificationSeconds;
-        sums.fitSeconds += this->FitSeconds;
+        row.status = !this->VerifyOutput ? 1 : f.passed ? 0 : 2;
+        row.maximumError = f.verifiedError;
+        PartResult result;
+        result.count("NumberOfSheets", f.sheets);
+        result.count("NumberOfInterpolatedSheets", f.interpolated);
+        result.count("NumberOfFailedSheets", f.failedSheets);
+        result.count("NumberOfTriangles", f.triangles);
+        result.count("NumberOfFitPatches", f.fitPatches);
+        result.count("NumberOfSheetsAboveFitTolerance", f.aboveFit);
+        result.measure("MaximumFitError", f.fitError);
+        result.measure("MaximumCoverageShortfall", f.coverage);
+        result.measure("InterpolationSeconds", f.interpolationSeconds);
+        result.measure("VerificationSeconds", f.verificationSeconds);
+        row.figures = result.figures;
       }
     }
-    if (row.status == 3)
-      vtkWarningMacro(<< "part '" << part.name << "' failed: " << row.message);
     row.seconds = secondsSince(t0);
-    setPartAt(output, part.place, partOutput);
-    setPartAt(fits, part.place, partFits);
-    rows.push_back(std::move(row));
-    this->UpdateProgress(static_cast<double>(k + 1) / static_cast<double>(parts.size()));
-    if (this->CheckAbort())
-      break;
+  };
+  // The solids are independent: filled concurrently, one solid per thread (each solid's
+  // own loops then run on its thread), in waves so that progress and abort are handled
+  // on this thread between them. A solid's result does not depend on the threads.
+  const int wave = std::max(1, 4 * threadsFor(this->NumberOfThreads));
+  int done = 0;
+  withThreads(this->NumberOfThreads, [&]() {
+    for (int begin = 0; begin < n; begin += wave)
+    {
+      const int end = std::min(n, begin + wave);
+      smpParallelFor()(static_cast<std::size_t>(end - begin), [&](std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i)
+          fill(begin + static_cast<int>(i));
+      });
+      done = end;
+      this->UpdateProgress(static_cast<double>(end) / static_cast<double>(n));
+      if (this->CheckAbort())
+        break;
+    }
+  });
+  rows.resize(done); // parts after an abort are left out, as they always were
+  Figures sums;
+  for (int k = 0; k < done; ++k)
+  {
+    for (const std::string& warning : figures[k].warnings)
+      vtkWarningMacro(<< "part '" << parts[k].name << "': " << warning);
+    if (rows[k].status == 3)
+      vtkWarningMacro(<< "part '" << parts[k].name << "' failed: " << rows[k].message);
+    sums.add(figures[k]);
+    setPartAt(output, parts[k].place, partOutputs[k]);
+    setPartAt(fits, parts[k].place, partFits[k]);
   }
-  this->PartRange[0] = 0.0;
-  this->PartRange[1] = 1.0;
   if (distributed)
     rows = gatherPartRows(distributed, rows);
   else
     for (PartRow& row : rows)
       if (row.status < 0)
         row.status = 3;
-  this->ResetFigures();
-  this->NumberOfSheets = sums.sheets;
-  this->NumberOfInterpolatedSheets = sums.interpolated;
-  this->NumberOfFailedSheets = sums.failedSheets;
-  this->NumberOfTriangles = sums.triangles;
-  this->NumberOfVerifiedPoints = sums.verified;
-  this->NumberOfTouchpointMismatches = sums.mismatches;
-  this->NumberOfFitPatches = sums.fitPatches;
-  this->NumberOfSheetsAboveFitTolerance = sums.aboveFit;
-  this->MaximumDeviation = sums.deviation;
-  this->MaximumCoverageShortfall = sums.coverage;
-  this->MaximumFitError = sums.fitError;
-  this->InterpolationSeconds = sums.interpolation;
-  this->VerificationSeconds = sums.verification;
-  this->FitSeconds = sums.fitSeconds;
+  sums.passed = true;
+  sums.verifiedError = 0.0;
   this->NumberOfParts = static_cast<int>(rows.size());
-  this->VerificationPassed = true;
   for (const PartRow& row : rows)
   {
-    this->MaximumVerifiedError = std::max(this->MaximumVerifiedError, row.maximumError);
+    sums.verifiedError = std::max(sums.verifiedError, row.maximumError);
     if (row.status >= 2)
     {
       ++this->NumberOfFailedParts;
-      this->VerificationPassed = false;
+      sums.passed = false;
     }
   }
+  this->PublishFigures(sums);
   attachPartSummary(output->GetFieldData(), rows);
   this->UpdateProgress(1.0);
   return 1;
 }
 
-void vtkSheetInterpolator::Interpolate(
-  vtkPolyData* mat, vtkUnstructuredGrid* grid, vtkPolyData* output, vtkUnstructuredGrid* fits)
+void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* grid, vtkPolyData* output,
+  vtkUnstructuredGrid* fits, Figures& figures, const std::function<void(double)>& progress) const
 {
   checkParameter("Tolerance", this->Tolerance, 1e-9, 1e-1);
   checkParameter("MaximumEdgeLength", this->MaximumEdgeLength, 1e-4, 1.0);
@@ -460,7 +492,7 @@ void vtkSheetInterpolator::Interpolate(
     if (!swept)
       fail("input 0 is neither vtkMAT3DFilter's output (it lacks the sheets' topology: SheetGovernors, "
            "SheetSeams) nor vtkMAT25DFilter's (it has no swept, profile or mid-sheets)");
-    this->PassExactSheets(mat, boundary, in.complex, in.governors, output);
+    this->PassExactSheets(mat, boundary, in.complex, in.governors, output, figures);
     return;
   }
   const std::vector<Generator3D> generators = medialGenerators(boundary);
@@ -597,7 +629,7 @@ void vtkSheetInterpolator::Interpolate(
         }
     });
   });
-  this->PartProgress(0.6);
+  progress(0.6);
   // The B-spline fits (port 1), also independent per sheet.
   const auto fitStart = std::chrono::steady_clock::now();
   std::vector<SheetFit> fitted(groups.size());
@@ -620,10 +652,10 @@ void vtkSheetInterpolator::Interpolate(
             }
       });
     });
-    this->WriteFits(fitted, fitErrors, labels, tupleIds, allTuples, fitOptions.tolerance, frame, fits);
+    this->WriteFits(fitted, fitErrors, labels, tupleIds, allTuples, fitOptions.tolerance, frame, fits, figures);
   }
-  this->FitSeconds = secondsSince(fitStart);
-  this->PartProgress(0.7);
+  figures.fitSeconds = secondsSince(fitStart);
+  progress(0.7);
   for (size_t k = 0; k < groups.size(); ++k)
   {
     const std::string& label = labels[k];
@@ -636,7 +668,7 @@ void vtkSheetInterpolator::Interpolate(
         messages[s] = errors[k];
       }
       failures.push_back(std::string("sheet ") + label + ": " + errors[k]);
-      vtkWarningMacro(<< "sheet " << label << " not interpolated: " << errors[k]);
+      figures.warnings.push_back("sheet " + label + " not interpolated: " + errors[k]);
       continue;
     }
     if (mesh.triangles.empty())
@@ -645,10 +677,10 @@ void vtkSheetInterpolator::Interpolate(
         status[s] = 0;
       continue;
     }
-    ++this->NumberOfInterpolatedSheets;
+    ++figures.interpolated;
     for (int s : tupleIds[k])
       status[s] = 1;
-    this->MaximumDeviation = std::max(this->MaximumDeviation, mesh.maxDeviation);
+    figures.deviation = std::max(figures.deviation, mesh.maxDeviation);
     // Vertices: the seams' own points where the sheet meets them, new points elsewhere.
     std::vector<int> id(mesh.vertices.size());
     for (size_t v = 0; v < mesh.vertices.size(); ++v)
@@ -677,19 +709,19 @@ void vtkSheetInterpolator::Interpolate(
     sheet.type = MedialElementType::Sheet;
     for (const auto& t : mesh.triangles)
       sheet.triangles.push_back({ { id[t[0]], id[t[1]], id[t[2]] } });
-    this->NumberOfTriangles += static_cast<int>(sheet.triangles.size());
+    figures.triangles += static_cast<int>(sheet.triangles.size());
     sheetOfElement[static_cast<int>(complex.elements.size())] = tupleIds[k].front();
     complex.elements.push_back(std::move(sheet));
     in.governors.push_back(label);
     meshes.push_back(std::move(mesh));
   }
-  this->NumberOfSheets = static_cast<int>(groups.size());
-  this->NumberOfFailedSheets = static_cast<int>(failures.size());
+  figures.sheets = static_cast<int>(groups.size());
+  figures.failedSheets = static_cast<int>(failures.size());
   // A convex edge's sample at a vertex is the seam's radius-0 point there.
   complex.weld(1e-12 * boundary.diagonal());
   // A sheet closed along a rim by its own points meets the rim's points only at its ends.
   complex.fanSheetsToCurves();
-  this->InterpolationSeconds = secondsSince(t0);
+  figures.interpolationSeconds = secondsSince(t0);
 
   const MedialComplex& written = complex;
   writeMedialComplex(written, frame,
@@ -732,15 +764,15 @@ void vtkSheetInterpolator::Interpolate(
   output->GetFieldData()->AddArray(statusArray);
   output->GetFieldData()->AddArray(messageArray);
 
-  VerificationOutcome outcome = this->VerifyPoints(exact, complex, frame);
+  VerificationOutcome outcome = this->VerifyPoints(exact, complex, frame, figures);
   // Completeness: the sheets' footprints cover every face (each boundary point has one
   // maximal ball), whatever the points' own check says.
-  this->MaximumCoverageShortfall = 0.0;
+  figures.coverage = 0.0;
   std::string uncovered;
   int uncoveredFaces = 0;
   for (const FaceCoverage& c : sheetCoverage(boundary, meshes))
   {
-    this->MaximumCoverageShortfall = std::max(this->MaximumCoverageShortfall, c.shortfall());
+    figures.coverage = std::max(figures.coverage, c.shortfall());
     if (c.shortfall() > 10.0 * this->Tolerance + 1e-9 && ++uncoveredFaces == 1)
     {
       std::ostringstream line;
@@ -762,15 +794,15 @@ void vtkSheetInterpolator::Interpolate(
       " sheet(s) not interpolated (first: " + failures.front() + ")";
   }
   attachVerification(output, outcome);
-  this->VerificationPassed = outcome.passed;
-  this->MaximumVerifiedError = outcome.maximumError;
+  figures.passed = outcome.passed;
+  figures.verifiedError = outcome.maximumError;
   if (!outcome.passed)
-    vtkWarningMacro(<< "verification failed: " << outcome.report);
+    figures.warnings.push_back("verification failed: " + outcome.report);
 }
 
 void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const std::vector<std::string>& fitErrors,
   const std::vector<std::string>& labels, const std::vector<std::vector<int>>& tupleIds, int tuples,
-  double tolerance, const Normalisation& frame, vtkUnstructuredGrid* fits)
+  double tolerance, const Normalisation& frame, vtkUnstructuredGrid* fits, Figures& figures) const
 {
   BoundaryGridBuilder builder;
   vtkNew<vtkDoubleArray> radius;
@@ -794,20 +826,22 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
   {
     if (!fitErrors[k].empty())
     {
-      ++this->NumberOfSheetsAboveFitTolerance;
-      vtkWarningMacro(<< "sheet " << labels[k] << " not fitted: " << fitErrors[k]);
+      ++figures.aboveFit;
+      figures.warnings.push_back("sheet " + labels[k] + " not fitted: " + fitErrors[k]);
       continue;
     }
     const SheetFit& fit = fitted[k];
     if (fit.patches.empty())
       continue;
-    this->MaximumFitError = std::max(this->MaximumFitError, fit.maxError());
+    figures.fitError = std::max(figures.fitError, fit.maxError());
     if (!fit.withinTolerance)
     {
-      ++this->NumberOfSheetsAboveFitTolerance;
-      vtkWarningMacro(<< "the B-spline fit of sheet " << labels[k] << " is off by " << fit.maxError()
-                      << " of the size (FitTolerance " << tolerance << ") with " << fit.countS << " x "
-                      << fit.countT << " control points");
+      ++figures.aboveFit;
+      std::ostringstream warning;
+      warning << "the B-spline fit of sheet " << labels[k] << " is off by " << fit.maxError()
+              << " of the size (FitTolerance " << tolerance << ") with " << fit.countS << " x " << fit.countT
+              << " control points";
+      figures.warnings.push_back(warning.str());
     }
     for (int s : tupleIds[k])
       tupleError->SetValue(s, fit.maxError());
@@ -835,7 +869,7 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
         radius->InsertNextValue(frame.lengthToUser(r));
       sheetId->InsertNextValue(tupleIds[k].front());
       cellError->InsertNextValue(fit.maxError());
-      ++this->NumberOfFitPatches;
+      ++figures.fitPatches;
     }
   }
   fits->ShallowCopy(builder.grid());
@@ -856,7 +890,7 @@ void vtkSheetInterpolator::WriteFits(const std::vector<SheetFit>& fitted, const 
 }
 
 VerificationOutcome vtkSheetInterpolator::VerifyPoints(
-  const PatchBoundary& exact, const MedialComplex& complex, const Normalisation& frame)
+  const PatchBoundary& exact, const MedialComplex& complex, const Normalisation& frame, Figures& figures) const
 {
   VerificationOutcome outcome;
   if (!this->VerifyOutput)
@@ -872,9 +906,9 @@ VerificationOutcome vtkSheetInterpolator::VerifyPoints(
   withThreads(this->NumberOfThreads, [&]() {
     v = verifyMedialComplex(exact, complex, stride, std::max(1e-15, 64.0 * frame.inputRounding()), smpParallelFor());
   });
-  this->VerificationSeconds = secondsSince(t0);
-  this->NumberOfVerifiedPoints = v.points;
-  this->NumberOfTouchpointMismatches = v.contactMismatches;
+  figures.verificationSeconds = secondsSince(t0);
+  figures.verifiedPoints = v.points;
+  figures.mismatches = v.contactMismatches;
   return outcomeOf(v, this->VerificationTolerance, complex, frame);
 }
 
@@ -882,7 +916,8 @@ VerificationOutcome vtkSheetInterpolator::VerifyPoints(
 // they pass through, each sheet element numbered as a sheet, and its points are checked
 // against the source like the interpolated ones.
 void vtkSheetInterpolator::PassExactSheets(vtkPolyData* mat, const Boundary3D& boundary,
-  const MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output)
+  const MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output,
+  Figures& figures) const
 {
   output->ShallowCopy(mat);
   std::map<int, int> sheetOfElement;
@@ -900,9 +935,9 @@ void vtkSheetInterpolator::PassExactSheets(vtkPolyData* mat, const Boundary3D& b
       statusArray->InsertNextValue(1);
       messageArray->InsertNextValue(std::string("exact ") + toString(complex.elements[e].type) +
         " from vtkMAT25DFilter (passed through)");
-      this->NumberOfTriangles += static_cast<int>(complex.elements[e].triangles.size());
+      figures.triangles += static_cast<int>(complex.elements[e].triangles.size());
     }
-  this->NumberOfSheets = this->NumberOfInterpolatedSheets = static_cast<int>(sheetOfElement.size());
+  figures.sheets = figures.interpolated = static_cast<int>(sheetOfElement.size());
   vtkDataArray* elementIds = mat->GetCellData()->GetArray(arrays::ElementId);
   vtkNew<vtkIntArray> sheetId;
   sheetId->SetName(arrays::SheetId);
@@ -917,15 +952,15 @@ void vtkSheetInterpolator::PassExactSheets(vtkPolyData* mat, const Boundary3D& b
   output->GetFieldData()->AddArray(statusArray);
   output->GetFieldData()->AddArray(messageArray);
   const PatchBoundary exact(boundary);
-  const VerificationOutcome outcome = this->VerifyPoints(exact, complex, boundary.userFrame());
+  const VerificationOutcome outcome = this->VerifyPoints(exact, complex, boundary.userFrame(), figures);
   // (Coverage needs each sheet point's touchpoints, which vtkMAT25DFilter does not write:
   // not measured here; its sheets cover the solid by construction.)
-  this->MaximumCoverageShortfall = 0.0;
+  figures.coverage = 0.0;
   attachVerification(output, outcome);
-  this->VerificationPassed = outcome.passed;
-  this->MaximumVerifiedError = outcome.maximumError;
+  figures.passed = outcome.passed;
+  figures.verifiedError = outcome.maximumError;
   if (!outcome.passed)
-    vtkWarningMacro(<< "verification failed: " << outcome.report);
+    figures.warnings.push_back("verification failed: " + outcome.report);
 }
 
 void vtkSheetInterpolator::PrintSelf(ostream& os, vtkIndent indent)

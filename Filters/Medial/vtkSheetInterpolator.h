@@ -82,6 +82,7 @@
 #include "ExactMATFiltersMedialModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <functional> // for FillPart
 #include <string> // for PassExactSheets
 #include <vector> // for PassExactSheets
 
@@ -177,21 +178,26 @@ private:
   vtkSheetInterpolator(const vtkSheetInterpolator&) = delete;
   void operator=(const vtkSheetInterpolator&) = delete;
 
-  void ResetFigures();
-  /// Progress within the solid being filled, mapped into its share of a collection.
-  void PartProgress(double fraction);
+  /// One solid's figures (and the warnings it raised), filled by FillPart on any thread.
+  struct Figures;
+  /// The getters' values from one solid's figures or a collection's sums.
+  void PublishFigures(const Figures& figures);
   /// One solid's sheets into `output` and `fits`; the error that stopped it, or "".
-  std::string FillPart(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
+  /// Reads only the settings: solids of a collection are filled concurrently.
+  std::string FillPart(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output,
+    vtkUnstructuredGrid* fits, Figures& figures, const std::function<void(double)>& progress) const;
   int RequestCollection(vtkCompositeDataSet* mats, vtkCompositeDataSet* boundaries, vtkCompositeDataSet* output,
     vtkCompositeDataSet* fits, vtkInformationVector* outputVector);
-  void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits);
+  void Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* boundary, vtkPolyData* output, vtkUnstructuredGrid* fits,
+    Figures& figures, const std::function<void(double)>& progress) const;
   void WriteFits(const std::vector<exactmat::SheetFit>& fitted, const std::vector<std::string>& fitErrors,
     const std::vector<std::string>& labels, const std::vector<std::vector<int>>& tupleIds, int tuples,
-    double tolerance, const exactmat::Normalisation& frame, vtkUnstructuredGrid* fits);
+    double tolerance, const exactmat::Normalisation& frame, vtkUnstructuredGrid* fits, Figures& figures) const;
   void PassExactSheets(vtkPolyData* mat, const exactmat::Boundary3D& boundary,
-    const exactmat::MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output);
+    const exactmat::MedialComplex& complex, const std::vector<std::string>& governors, vtkPolyData* output,
+    Figures& figures) const;
   exactmat::VerificationOutcome VerifyPoints(const exactmat::PatchBoundary& exact,
-    const exactmat::MedialComplex& complex, const exactmat::Normalisation& frame);
+    const exactmat::MedialComplex& complex, const exactmat::Normalisation& frame, Figures& figures) const;
 
   double Tolerance = 1e-4;
   double MaximumEdgeLength = 0.05;
@@ -220,7 +226,6 @@ private:
   double FitSeconds = 0.0;
   int NumberOfParts = 0;
   int NumberOfFailedParts = 0;
-  double PartRange[2] = { 0.0, 1.0 }; ///< the current solid's share of the progress
 };
 
 #endif
