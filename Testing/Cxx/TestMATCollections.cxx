@@ -299,7 +299,7 @@ TEST(MATCollections, SolidsThroughThe3DFilterWithOneItCannotDo)
 
 // The sheets of a collection of solids: vtkMAT3DFilter's collection output and the
 // collection of solids as the source give each solid's own sheets and fits in its place;
-// the solid whose seams failed is named and the others are filled.
+// the solid whose seams failed is named and the others are filled, each as on its own.
 TEST(MATCollections, SheetsOfACollectionOfSolids)
 {
   const std::vector<std::string> names = { "box", "cylinder", "notched-cube" };
@@ -310,7 +310,7 @@ TEST(MATCollections, SheetsOfACollectionOfSolids)
   sheets->SetInputConnection(seams->GetOutputPort());
   sheets->SetSourceData(collection);
   sheets->SetNumberOfThreads(2);
-  // Progress over the collection only grows (each solid reports within its share).
+  // The solids are filled concurrently (two threads); progress only grows, wave by wave.
   std::vector<double> progress;
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetClientData(&progress);
