@@ -41,18 +41,36 @@ CurveDerivatives BezierCurve::derivatives(double t) const
     rationalCurveDerivatives(a[0], a[1], a[2], out);
     return out;
   }
-  double b[3 * (MaxDegree + 1)];
-  bernsteinWithDerivatives(p, t, b);
-  Vec4 a[3] = { Vec4::Zero(), Vec4::Zero(), Vec4::Zero() };
-  for (int k = 0; k < 3; ++k)
-  {
-    for (int i = 0; i <= p; ++i)
-    {
-      a[k] += b[k * (p + 1) + i] * Points[i];
-    }
-  }
+  // De Casteljau down to the last three points Q0, Q1, Q2 (a quadratic in t): the second
+  // homogeneous derivative is p(p − 1)(Q2 − 2 Q1 + Q0), one more level gives R0, R1 with
+  // the first derivative p(R1 − R0), and the point is their blend. Convex combinations
+  // only (stable), and for the conics of most profiles (p = 2) no level before Q at all:
+  // the Bernstein triangle and three sums over the net cost twice as much.
   CurveDerivatives out;
-  rationalCurveDerivatives(a[0], a[1], a[2], out);
+  if (p == 0)
+  {
+    rationalCurveDerivatives(Points[0], Vec4::Zero(), Vec4::Zero(), out);
+    return out;
+  }
+  const double s = 1.0 - t;
+  Vec4 reduced[MaxDegree + 1];
+  const Vec4* q = Points.data();
+  if (p > 2)
+  {
+    for (int i = 0; i < p; ++i)
+      reduced[i] = s * Points[i] + t * Points[i + 1];
+    for (int level = p - 1; level > 2; --level)
+      for (int i = 0; i < level; ++i)
+        reduced[i] = s * reduced[i] + t * reduced[i + 1];
+    q = reduced;
+  }
+  const Vec4 r0 = s * q[0] + t * q[1];
+  const Vec4 r1 = s * q[1] + t * q[2];
+  const double pp = static_cast<double>(p);
+  const Vec4 a0 = s * r0 + t * r1;
+  const Vec4 a1 = pp * (r1 - r0);
+  const Vec4 a2 = (pp * (pp - 1.0)) * (q[2] - 2.0 * q[1] + q[0]);
+  rationalCurveDerivatives(a0, a1, a2, out);
   return out;
 }
 
