@@ -42,6 +42,12 @@ public:
     std::fill(Data, Data + n, value);
     Size = n;
   }
+  /// n elements whose values the caller writes next (no fill).
+  void resizeForOverwrite(std::size_t n)
+  {
+    check(n);
+    Size = n;
+  }
   template <typename It>
   void assign(It first, It last)
   {

@@ -743,15 +743,13 @@ struct PatchSearch
       }
     }
     const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
-    const double su = SplitAt, sv = SplitAt;
-    search(gu.restrictedTo(0, su, 0, sv), gv.restrictedTo(0, su, 0, sv), u0, um, v0, vm,
-      depth + 1);
-    search(gu.restrictedTo(su, 1, 0, sv), gv.restrictedTo(su, 1, 0, sv), um, u1, v0, vm,
-      depth + 1);
-    search(gu.restrictedTo(0, su, sv, 1), gv.restrictedTo(0, su, sv, 1), u0, um, vm, v1,
-      depth + 1);
-    search(gu.restrictedTo(su, 1, sv, 1), gv.restrictedTo(su, 1, sv, 1), um, u1, vm, v1,
-      depth + 1);
+    BernsteinPoly2 pu[4], pv[4];
+    gu.quarter(SplitAt, SplitAt, pu);
+    gv.quarter(SplitAt, SplitAt, pv);
+    search(pu[0], pv[0], u0, um, v0, vm, depth + 1);
+    search(pu[1], pv[1], um, u1, v0, vm, depth + 1);
+    search(pu[2], pv[2], u0, um, vm, v1, depth + 1);
+    search(pu[3], pv[3], um, u1, vm, v1, depth + 1);
   }
 };
 

@@ -128,20 +128,33 @@ BernsteinPoly BernsteinPoly::elevatedTo(int m) const
 
 void BernsteinPoly::split(double t, BernsteinPoly& left, BernsteinPoly& right) const
 {
+  // The innermost step of every subdivision search (2D footpoints split each row and
+  // column of two bivariate polynomials per box): plain loops on a stack copy, no
+  // library copy or fill calls for a handful of coefficients.
   const int n = degree();
-  InlineVector<96> b = c;
-  left.c.assign(n + 1, 0.0);
-  right.c.assign(n + 1, 0.0);
-  left.c[0] = b[0];
-  right.c[n] = b[n];
-  for (int r = 1; r <= n; ++r)
+  if (n < 0)
   {
-    for (int i = 0; i <= n - r; ++i)
-    {
-      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
-    }
-    left.c[r] = b[0];
-    right.c[n - r] = b[n - r];
+    left.c.assign(0, 0.0);
+    right.c.assign(0, 0.0);
+    return;
+  }
+  double b[96];
+  const double* in = c.begin();
+  for (int i = 0; i <= n; ++i)
+    b[i] = in[i];
+  left.c.resizeForOverwrite(n + 1);
+  right.c.resizeForOverwrite(n + 1);
+  double* l = left.c.data();
+  double* r = right.c.data();
+  const double s = 1.0 - t;
+  l[0] = b[0];
+  r[n] = b[n];
+  for (int k = 1; k <= n; ++k)
+  {
+    for (int i = 0; i <= n - k; ++i)
+      b[i] = s * b[i] + t * b[i + 1];
+    l[k] = b[0];
+    r[n - k] = b[n - k];
   }
 }
 
@@ -349,6 +362,58 @@ BernsteinPoly2 BernsteinPoly2::restrictedTo(double u0, double u1, double v0, dou
   BernsteinPoly2 r =
     mapColumns(*this, nu, [u0, u1](const BernsteinPoly& p) { return p.restrictedTo(u0, u1); });
   return mapRows(r, nv, [v0, v1](const BernsteinPoly& p) { return p.restrictedTo(v0, v1); });
+}
+
+namespace
+{
+// Every column (along u) or row (along v) split at t into the parts [0, t] and [t, 1].
+void splitColumns(const BernsteinPoly2& a, double t, BernsteinPoly2& lower, BernsteinPoly2& upper)
+{
+  lower = BernsteinPoly2(a.nu, a.nv);
+  upper = BernsteinPoly2(a.nu, a.nv);
+  BernsteinPoly col, l, r;
+  col.c.resize(a.nu + 1);
+  for (int j = 0; j <= a.nv; ++j)
+  {
+    for (int i = 0; i <= a.nu; ++i)
+      col.c[i] = a.at(i, j);
+    col.split(t, l, r);
+    for (int i = 0; i <= a.nu; ++i)
+    {
+      lower.at(i, j) = l.c[i];
+      upper.at(i, j) = r.c[i];
+    }
+  }
+}
+
+void splitRows(const BernsteinPoly2& a, double t, BernsteinPoly2& lower, BernsteinPoly2& upper)
+{
+  lower = BernsteinPoly2(a.nu, a.nv);
+  upper = BernsteinPoly2(a.nu, a.nv);
+  BernsteinPoly row, l, r;
+  row.c.resize(a.nv + 1);
+  for (int i = 0; i <= a.nu; ++i)
+  {
+    for (int j = 0; j <= a.nv; ++j)
+      row.c[j] = a.at(i, j);
+    row.split(t, l, r);
+    for (int j = 0; j <= a.nv; ++j)
+    {
+      lower.at(i, j) = l.c[j];
+      upper.at(i, j) = r.c[j];
+    }
+  }
+}
+} // namespace
+
+void BernsteinPoly2::quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) const
+{
+  // restrictedTo(0, s) keeps the left part of split(s) and restrictedTo(s, 1) the right
+  // part of split(s / 1): one split gives both, operation for operation.
+  BernsteinPoly2 lowerU, upperU;
+  splitColumns(*this, su, lowerU, upperU);
+  splitRows(lowerU, sv, parts[0], parts[2]);
+  splitRows(upperU, sv, parts[1], parts[3]);
 }
 
 bool BernsteinPoly2::hasStrictSign(double zero) const

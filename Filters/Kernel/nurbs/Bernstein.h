@@ -93,6 +93,10 @@ struct BernsteinPoly2
   BernsteinPoly2 elevatedTo(int mu, int mv) const;
   /// Re-parameterised over [u0,u1]×[v0,v1] ⊂ [0,1]².
   BernsteinPoly2 restrictedTo(double u0, double u1, double v0, double v1) const;
+  /// The four parts at (su, sv), bit-identical to restrictedTo on each (0 … su … 1 in
+  /// both): [u0 v0, u1 v0, u0 v1, u1 v1] with u0 = [0, su], u1 = [su, 1]. One split per
+  /// column and two per row instead of four of each: the subdivision search's step.
+  void quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) const;
   /// True when every coefficient is > zero or every one is < −zero: no root in the box.
   bool hasStrictSign(double zero) const;
   double maxAbs() const;

@@ -79,6 +79,20 @@ SurfaceDerivatives BezierPatch::derivatives(double u, double v) const
   double bu[3 * (MaxDegree + 1)], bv[3 * (MaxDegree + 1)];
   bernsteinWithDerivatives(P, u, bu);
   bernsteinWithDerivatives(Q, v, bv);
+  // Each row's sums along v (value, first and second derivative) once, shared by the
+  // three u-orders that use them: the same sums in the same order as summing per
+  // derivative, half the work.
+  Vec4 rows[3][MaxDegree + 1];
+  for (int l = 0; l < 3; ++l)
+    for (int i = 0; i <= P; ++i)
+    {
+      Vec4 row = Vec4::Zero();
+      for (int j = 0; j <= Q; ++j)
+      {
+        row += bv[l * (Q + 1) + j] * homogeneousPoint(i, j);
+      }
+      rows[l][i] = row;
+    }
   static const int orders[6][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 2, 0 }, { 1, 1 }, { 0, 2 } };
   Vec4 a[6];
   for (int d = 0; d < 6; ++d)
@@ -87,12 +101,7 @@ SurfaceDerivatives BezierPatch::derivatives(double u, double v) const
     a[d].setZero();
     for (int i = 0; i <= P; ++i)
     {
-      Vec4 row = Vec4::Zero();
-      for (int j = 0; j <= Q; ++j)
-      {
-        row += bv[l * (Q + 1) + j] * homogeneousPoint(i, j);
-      }
-      a[d] += bu[k * (P + 1) + i] * row;
+      a[d] += bu[k * (P + 1) + i] * rows[l][i];
     }
   }
   SurfaceDerivatives out;
