@@ -25,7 +25,13 @@
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESCAFControl_Reader.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
@@ -252,6 +258,67 @@ struct CADDocument
   }
 };
 
+// The translator's checks as "#ENTITY: message" (the file's own entity label; "file" for
+// the file as a whole), fails first when `failsOnly`, at most `limit` of them; `count`
+// gets how many there were.
+std::vector<std::string> checkMessages(const Interface_CheckIterator& checks,
+  const Handle(Interface_InterfaceModel) & model, bool failsOnly, std::size_t limit, std::size_t& count)
+{
+  std::vector<std::string> out;
+  count = 0;
+  for (Interface_CheckIterator it = checks; it.More(); it.Next())
+  {
+    const Handle(Interface_Check)& check = it.Value();
+    std::string where = "file";
+    if (it.Number() > 0 && !model.IsNull() && it.Number() <= model->NbEntities())
+    {
+      Handle(TCollection_HAsciiString) label = model->StringLabel(model->Value(it.Number()));
+      where = label.IsNull() ? "#" + std::to_string(it.Number()) : label->ToCString();
+    }
+    auto add = [&](const char* kind, const char* text) {
+      ++count;
+      if (out.size() < limit)
+        out.push_back(where + ": " + kind + text);
+    };
+    for (int i = 1; i <= check->NbFails(); ++i)
+      add("", check->CFail(i));
+    if (!failsOnly)
+      for (int i = 1; i <= check->NbWarnings(); ++i)
+        add("warning: ", check->CWarning(i));
+  }
+  return out;
+}
+
+// A file whose syntax check fails (an unresolved reference, an entity of the wrong type)
+// is refused before the transfer: OpenCASCADE 7.6 dereferences the missing entity and
+// crashes on such a file.
+void refuseInconsistentFile(XSControl_Reader& reader, const char* format)
+{
+  if (reader.Model().IsNull() || reader.Model()->NbEntities() == 0)
+    fail("the file holds no shape: no ", format, " entities in it");
+  std::size_t count = 0;
+  const std::vector<std::string> fails =
+    checkMessages(reader.WS()->ModelCheckList(), reader.Model(), true, 3, count);
+  if (count == 0)
+    return;
+  std::string list;
+  for (const std::string& f : fails)
+    list += (list.empty() ? "" : "; ") + f;
+  fail("an inconsistent ", format, " file: OpenCASCADE's check of its entities found ", count, " error(s) (",
+    list, count > fails.size() ? "; …" : "", ")");
+}
+
+// What the translator reported while turning the file's entities into shapes.
+std::vector<std::string> translatorMessages(XSControl_Reader& reader)
+{
+  std::size_t count = 0;
+  std::vector<std::string> out = checkMessages(
+    reader.WS()->TransferReader()->TransientProcess()->CheckList(false), reader.Model(), false, 1000, count);
+  if (count > out.size())
+    out.push_back("… and " + std::to_string(count - out.size()) + " more");
+  return out;
+}
+
 // Reads the file with OpenCASCADE (its XDE readers: names and colours too), keeping lengths
 // in the file's own unit.
 void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& doc)
@@ -304,6 +371,7 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
     {
       fail("not a readable STEP file (OpenCASCADE's STEP reader failed)");
     }
+    refuseInconsistentFile(reader.ChangeReader(), "STEP");
     TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
     reader.ChangeReader().FileUnits(lengths, angles, solidAngles);
     setUnit(lengths.IsEmpty() ? "" : lengths.First().ToCString());
@@ -311,6 +379,7 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
+    out.translatorMessages = translatorMessages(reader.ChangeReader());
   }
   else if (ext == "iges" || ext == "igs")
   {
@@ -322,12 +391,14 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
     {
       fail("not a readable IGES file (OpenCASCADE's IGES reader failed)");
     }
+    refuseInconsistentFile(reader, "IGES");
     Handle(TCollection_HAsciiString) unit = reader.IGESModel()->GlobalSection().UnitName();
     setUnit(unit.IsNull() ? "" : unit->ToCString());
     if (!reader.Transfer(doc.document))
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
+    out.translatorMessages = translatorMessages(reader);
   }
   else
   {
@@ -1344,6 +1415,14 @@ void importPlanar(const TopoDS_Shape& shape, int part, const std::string& partNa
 CADBoundary importCAD(const std::string& fileName, const CADImportOptions& options)
 {
   CADBoundary out;
+  // A conversion that fails on a shape OpenCASCADE has healed or doubted says so: the
+  // translator's first finding is often the cause (a vertex off its edge's curve).
+  auto translatorNote = [&out]() {
+    if (out.translatorMessages.empty())
+      return std::string();
+    return " (OpenCASCADE's translator reported " + std::to_string(out.translatorMessages.size()) +
+      " finding(s) on this file, first: " + out.translatorMessages.front() + ")";
+  };
   try
   {
     CADDocument doc;
@@ -1413,11 +1492,11 @@ CADBoundary importCAD(const std::string& fileName, const CADImportOptions& optio
   }
   catch (const InputError& e)
   {
-    throw InputError(fileName + ": " + e.what());
+    throw InputError(fileName + ": " + e.what() + translatorNote());
   }
   catch (const Standard_Failure& e)
   {
-    throw InputError(fileName + ": OpenCASCADE failed: " + e.GetMessageString());
+    throw InputError(fileName + ": OpenCASCADE failed: " + e.GetMessageString() + translatorNote());
   }
   return out;
 }

@@ -78,6 +78,10 @@ struct CADBoundary
   std::string partName;   ///< the name of the part read
   std::map<int, Vec3> faceColours; ///< RGB in [0, 1] of the faces the file colours (by FaceId)
   int faceCount = 0, edgeCount = 0; ///< of the part read
+  /// OpenCASCADE's findings while translating the file (its shape healing: "#114: Poor
+  /// result from projection vertex / curve 3d"), warnings and fails, in entity order: what
+  /// the translator changed or doubted on the way to the shapes read.
+  std::vector<std::string> translatorMessages;
 };
 
 /// Reads `fileName` (.step/.stp or .iges/.igs, case-insensitive). Throws InputError naming

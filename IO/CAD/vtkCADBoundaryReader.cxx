@@ -66,6 +66,7 @@ int vtkCADBoundaryReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  this->NumberOfTranslatorMessages = 0;
   if (!this->FileName || !*this->FileName)
   {
     vtkErrorMacro("no FileName set");
@@ -126,6 +127,22 @@ int vtkCADBoundaryReader::RequestData(
       parts->SetName("NumberOfParts");
       parts->InsertNextValue(cad.partCount);
       fd->AddArray(parts);
+      vtkNew<vtkStringArray> translator;
+      translator->SetName("TranslatorMessages");
+      for (const std::string& m : cad.translatorMessages)
+      {
+        translator->InsertNextValue(m);
+      }
+      fd->AddArray(translator);
+      this->NumberOfTranslatorMessages = static_cast<int>(cad.translatorMessages.size());
+      if (!cad.translatorMessages.empty())
+      {
+        // What OpenCASCADE healed or doubted on the way: the shapes read may differ from
+        // the file's by its fixes (each checked again by the exact conversion).
+        vtkWarningMacro(<< this->FileName << ": OpenCASCADE's " << cad.format << " translator reported "
+                        << cad.translatorMessages.size() << " finding(s), first: "
+                        << cad.translatorMessages.front() << " (all in field data TranslatorMessages)");
+      }
       this->NumberOfParts = cad.partCount;
       this->SetLengthUnit(cad.lengthUnit.c_str());
     },

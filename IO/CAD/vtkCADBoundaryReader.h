@@ -64,6 +64,9 @@ public:
   /// After an update: the parts (solids or faces) in the file, and the unit read.
   vtkGetMacro(NumberOfParts, int);
   vtkGetStringMacro(LengthUnit);
+  /// After an update: OpenCASCADE's warnings and fails while translating the file (its
+  /// shape healing), also warned and kept as field data `TranslatorMessages`.
+  vtkGetMacro(NumberOfTranslatorMessages, int);
 
   /// True when the file name ends in .step, .stp, .iges or .igs (any case).
   static bool CanReadFile(const char* fileName);
@@ -78,6 +81,7 @@ protected:
   int Dimension = 0;
   int PartIndex = 0;
   int NumberOfParts = 0;
+  int NumberOfTranslatorMessages = 0;
   char* LengthUnit = nullptr;
   char* PartName = nullptr;
 

@@ -511,6 +511,12 @@ TEST(vtkCADBoundaryReader, BoxMATIsTheCatalogueBoxMAT)
   EXPECT_EQ(seams[0], 12);
   EXPECT_EQ(junctions[0], junctions[1]);
   EXPECT_EQ(junctions[0].size(), 4u);
+  // A clean file: OpenCASCADE's translator found nothing to heal (the array is there, empty).
+  EXPECT_EQ(reader->GetNumberOfTranslatorMessages(), 0);
+  auto* messages =
+    vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("TranslatorMessages"));
+  ASSERT_NE(messages, nullptr);
+  EXPECT_EQ(messages->GetNumberOfValues(), 0);
 }
 
 TEST(vtkCADBoundaryReader, PlanarFaceMATIsTheCatalogueMAT)
@@ -603,6 +609,28 @@ TEST(vtkCADBoundaryReader, BadFilesSayWhy)
   expectError(output("cad-open.step"), "do not close up", 3);
   // A face asked for that the file does not have.
   writeStep(BRepPrimAPI_MakeBox(1, 2, 3).Shape(), output("cad-box.step"));
+  std::string box;
+  {
+    std::ifstream in(output("cad-box.step"));
+    box.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  // A vertex that names an entity the file does not have: OpenCASCADE 7.6's own transfer
+  // dereferences it and crashes; refused before it with OpenCASCADE's own findings.
+  const std::size_t vertex = box.find("VERTEX_POINT('',#");
+  ASSERT_NE(vertex, std::string::npos);
+  const std::size_t vertexEnd = box.find(')', vertex);
+  const std::string pointId = box.substr(vertex + 17, vertexEnd - vertex - 17);
+  std::ofstream(output("cad-dangling.step")) << box.substr(0, vertex) << "VERTEX_POINT('',#999999"
+                                             << box.substr(vertexEnd);
+  expectError(output("cad-dangling.step"), "an inconsistent STEP file");
+  expectError(output("cad-dangling.step"), "unresolved");
+  // A vertex moved 1e-3 off its edges: OpenCASCADE's translator warns, the exact
+  // conversion refuses the edge, and the error carries the translator's finding.
+  const std::size_t point = box.find("#" + pointId + " = CARTESIAN_POINT");
+  ASSERT_NE(point, std::string::npos);
+  const std::size_t pointEnd = box.find("));", point);
+  std::ofstream(output("cad-moved-vertex.step")) << box.substr(0, pointEnd) << "001" << box.substr(pointEnd);
+  expectError(output("cad-moved-vertex.step"), "OpenCASCADE's translator reported");
   const Read missing = readCAD(output("cad-box.step"), 3, 4);
   EXPECT_NE(missing.errors.find("solid 4 asked for, but the file has 1 solid(s)"), std::string::npos)
     << missing.errors;
