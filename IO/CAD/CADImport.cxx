@@ -29,6 +29,7 @@
 #include <Interface_CheckIterator.hxx>
 #include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
+#include <OSD.hxx>
 #include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
@@ -69,8 +70,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <csignal>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 
 namespace exactmat
@@ -212,6 +215,55 @@ private:
   std::vector<Message_Gravity> Levels;
 };
 
+// OpenCASCADE's translators catch an access violation on a malformed entity themselves
+// (a vertex whose point has two coordinates: the transfer of that root fails and says
+// so) — but only while OpenCASCADE's own signal handlers are installed; without them such
+// a file kills the process. They are installed for the read (no floating-point traps) and
+// the process's own handlers put back after, whatever they were; nested or concurrent
+// reads share one installation.
+class TranslatorSignals
+{
+public:
+  TranslatorSignals()
+  {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (depth()++ > 0)
+      return;
+    for (int s = 1; s < NSIG; ++s)
+      if (s != SIGKILL && s != SIGSTOP)
+        sigaction(s, nullptr, &saved()[s]);
+    OSD::SetSignal(OSD_SignalMode_Set, Standard_False);
+  }
+  ~TranslatorSignals()
+  {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (--depth() > 0)
+      return;
+    for (int s = 1; s < NSIG; ++s)
+      if (s != SIGKILL && s != SIGSTOP)
+        sigaction(s, &saved()[s], nullptr);
+  }
+  TranslatorSignals(const TranslatorSignals&) = delete;
+  TranslatorSignals& operator=(const TranslatorSignals&) = delete;
+
+private:
+  static std::mutex& mutex()
+  {
+    static std::mutex m;
+    return m;
+  }
+  static int& depth()
+  {
+    static int d = 0;
+    return d;
+  }
+  static struct sigaction* saved()
+  {
+    static struct sigaction handlers[NSIG];
+    return handlers;
+  }
+};
+
 // The file read into an XCAF document: the shape, and the names and colours the file gives
 // its parts and faces.
 struct CADDocument
@@ -336,6 +388,7 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
   }
   const std::string ext = lowerExtension(fileName);
   const QuietMessenger quiet;
+  const TranslatorSignals signals;
   // The translators' settings exist once their controllers are initialised.
   STEPControl_Controller::Init();
   IGESControl_Controller::Init();
@@ -375,11 +428,12 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
     TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
     reader.ChangeReader().FileUnits(lengths, angles, solidAngles);
     setUnit(lengths.IsEmpty() ? "" : lengths.First().ToCString());
-    if (!reader.Transfer(doc.document))
+    const bool transferred = reader.Transfer(doc.document);
+    out.translatorMessages = translatorMessages(reader.ChangeReader());
+    if (!transferred)
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
-    out.translatorMessages = translatorMessages(reader.ChangeReader());
   }
   else if (ext == "iges" || ext == "igs")
   {
@@ -394,11 +448,12 @@ void readDocument(const std::string& fileName, CADBoundary& out, CADDocument& do
     refuseInconsistentFile(reader, "IGES");
     Handle(TCollection_HAsciiString) unit = reader.IGESModel()->GlobalSection().UnitName();
     setUnit(unit.IsNull() ? "" : unit->ToCString());
-    if (!reader.Transfer(doc.document))
+    const bool transferred = reader.Transfer(doc.document);
+    out.translatorMessages = translatorMessages(reader);
+    if (!transferred)
     {
       fail("the file holds no shape OpenCASCADE can transfer");
     }
-    out.translatorMessages = translatorMessages(reader);
   }
   else
   {

@@ -73,6 +73,8 @@
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <csignal>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -631,6 +633,19 @@ TEST(vtkCADBoundaryReader, BadFilesSayWhy)
   const std::size_t pointEnd = box.find("));", point);
   std::ofstream(output("cad-moved-vertex.step")) << box.substr(0, pointEnd) << "001" << box.substr(pointEnd);
   expectError(output("cad-moved-vertex.step"), "OpenCASCADE's translator reported");
+  // A vertex whose point has two coordinates: OpenCASCADE's transfer dereferences the
+  // missing third and would kill the process; with its own signal handlers installed for
+  // the read it drops the entity and says so. The process's own handlers are back after.
+  struct sigaction before, after;
+  sigaction(SIGSEGV, nullptr, &before);
+  const std::size_t tupleEnd = box.find("));", point);
+  const std::size_t lastComma = box.rfind(',', tupleEnd);
+  std::ofstream(output("cad-flat-vertex.step")) << box.substr(0, lastComma) << box.substr(tupleEnd);
+  expectError(output("cad-flat-vertex.step"), "Entity was not translated");
+  sigaction(SIGSEGV, nullptr, &after);
+  EXPECT_EQ(before.sa_handler, after.sa_handler);
+  EXPECT_EQ(before.sa_sigaction, after.sa_sigaction);
+  EXPECT_EQ(before.sa_flags, after.sa_flags);
   const Read missing = readCAD(output("cad-box.step"), 3, 4);
   EXPECT_NE(missing.errors.find("solid 4 asked for, but the file has 1 solid(s)"), std::string::npos)
     << missing.errors;
