@@ -367,40 +367,23 @@ BernsteinPoly2 BernsteinPoly2::restrictedTo(double u0, double u1, double v0, dou
 namespace
 {
 // Every column (along u) or row (along v) split at t into the parts [0, t] and [t, 1].
-void splitColumns(const BernsteinPoly2& a, double t, BernsteinPoly2& lower, BernsteinPoly2& upper)
+void splitLines(const BernsteinPoly2& a, double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper)
 {
   lower = BernsteinPoly2(a.nu, a.nv);
   upper = BernsteinPoly2(a.nu, a.nv);
-  BernsteinPoly col, l, r;
-  col.c.resize(a.nu + 1);
-  for (int j = 0; j <= a.nv; ++j)
+  const int n = alongU ? a.nu : a.nv, lines = alongU ? a.nv + 1 : a.nu + 1;
+  auto at = [&](int line, int k) { return alongU ? k * (a.nv + 1) + line : line * (a.nv + 1) + k; };
+  BernsteinPoly coefficients, l, r;
+  coefficients.c.resize(n + 1);
+  for (int line = 0; line < lines; ++line)
   {
-    for (int i = 0; i <= a.nu; ++i)
-      col.c[i] = a.at(i, j);
-    col.split(t, l, r);
-    for (int i = 0; i <= a.nu; ++i)
+    for (int k = 0; k <= n; ++k)
+      coefficients.c[k] = a.c[at(line, k)];
+    coefficients.split(t, l, r);
+    for (int k = 0; k <= n; ++k)
     {
-      lower.at(i, j) = l.c[i];
-      upper.at(i, j) = r.c[i];
-    }
-  }
-}
-
-void splitRows(const BernsteinPoly2& a, double t, BernsteinPoly2& lower, BernsteinPoly2& upper)
-{
-  lower = BernsteinPoly2(a.nu, a.nv);
-  upper = BernsteinPoly2(a.nu, a.nv);
-  BernsteinPoly row, l, r;
-  row.c.resize(a.nv + 1);
-  for (int i = 0; i <= a.nu; ++i)
-  {
-    for (int j = 0; j <= a.nv; ++j)
-      row.c[j] = a.at(i, j);
-    row.split(t, l, r);
-    for (int j = 0; j <= a.nv; ++j)
-    {
-      lower.at(i, j) = l.c[j];
-      upper.at(i, j) = r.c[j];
+      lower.c[at(line, k)] = l.c[k];
+      upper.c[at(line, k)] = r.c[k];
     }
   }
 }
@@ -411,9 +394,9 @@ void BernsteinPoly2::quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) c
   // restrictedTo(0, s) keeps the left part of split(s) and restrictedTo(s, 1) the right
   // part of split(s / 1): one split gives both, operation for operation.
   BernsteinPoly2 lowerU, upperU;
-  splitColumns(*this, su, lowerU, upperU);
-  splitRows(lowerU, sv, parts[0], parts[2]);
-  splitRows(upperU, sv, parts[1], parts[3]);
+  splitLines(*this, su, true, lowerU, upperU);
+  splitLines(lowerU, sv, false, parts[0], parts[2]);
+  splitLines(upperU, sv, false, parts[1], parts[3]);
 }
 
 bool BernsteinPoly2::hasStrictSign(double zero) const
