@@ -1010,29 +1010,8 @@ bool negativeSomewhere2(const BernsteinPoly2& h, int depthU, int depthV)
   if ((splitU ? depthU : depthV) >= 24)
     return false;
   // Both halves in one de Casteljau pass per row (or column).
-  const int n = splitU ? h.nu : h.nv, lines = splitU ? h.nv + 1 : h.nu + 1;
-  if (n >= 64)
-  {
-    const BernsteinPoly2 a = splitU ? h.restrictedTo(0.0, 0.5, 0.0, 1.0) : h.restrictedTo(0.0, 1.0, 0.0, 0.5);
-    const BernsteinPoly2 b = splitU ? h.restrictedTo(0.5, 1.0, 0.0, 1.0) : h.restrictedTo(0.0, 1.0, 0.5, 1.0);
-    const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
-    return negativeSomewhere2(a, du, dv) || negativeSomewhere2(b, du, dv);
-  }
-  BernsteinPoly2 a(h.nu, h.nv), b(h.nu, h.nv);
-  double work[64];
-  for (int line = 0; line < lines; ++line)
-  {
-    for (int k = 0; k <= n; ++k)
-      work[k] = splitU ? h.at(k, line) : h.at(line, k);
-    for (int level = 0; level <= n; ++level)
-    {
-      // work[0] is the left half's coefficient `level`, work[n − level] the right half's.
-      (splitU ? a.at(level, line) : a.at(line, level)) = work[0];
-      (splitU ? b.at(n - level, line) : b.at(line, n - level)) = work[n - level];
-      for (int k = 0; k < n - level; ++k)
-        work[k] = 0.5 * (work[k] + work[k + 1]);
-    }
-  }
+  BernsteinPoly2 a, b;
+  h.split(0.5, splitU, a, b);
   const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
   return negativeSomewhere2(a, du, dv) || negativeSomewhere2(b, du, dv);
 }

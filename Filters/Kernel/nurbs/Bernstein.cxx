@@ -364,11 +364,9 @@ BernsteinPoly2 BernsteinPoly2::restrictedTo(double u0, double u1, double v0, dou
   return mapRows(r, nv, [v0, v1](const BernsteinPoly& p) { return p.restrictedTo(v0, v1); });
 }
 
-namespace
+void BernsteinPoly2::split(double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper) const
 {
-// Every column (along u) or row (along v) split at t into the parts [0, t] and [t, 1].
-void splitLines(const BernsteinPoly2& a, double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper)
-{
+  const BernsteinPoly2& a = *this;
   lower = BernsteinPoly2(a.nu, a.nv);
   upper = BernsteinPoly2(a.nu, a.nv);
   const int n = alongU ? a.nu : a.nv, lines = alongU ? a.nv + 1 : a.nu + 1;
@@ -387,16 +385,15 @@ void splitLines(const BernsteinPoly2& a, double t, bool alongU, BernsteinPoly2& 
     }
   }
 }
-} // namespace
 
 void BernsteinPoly2::quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) const
 {
   // restrictedTo(0, s) keeps the left part of split(s) and restrictedTo(s, 1) the right
   // part of split(s / 1): one split gives both, operation for operation.
   BernsteinPoly2 lowerU, upperU;
-  splitLines(*this, su, true, lowerU, upperU);
-  splitLines(lowerU, sv, false, parts[0], parts[2]);
-  splitLines(upperU, sv, false, parts[1], parts[3]);
+  split(su, true, lowerU, upperU);
+  lowerU.split(sv, false, parts[0], parts[2]);
+  upperU.split(sv, false, parts[1], parts[3]);
 }
 
 bool BernsteinPoly2::hasStrictSign(double zero) const

@@ -97,6 +97,8 @@ struct BernsteinPoly2
   /// both): [u0 v0, u1 v0, u0 v1, u1 v1] with u0 = [0, su], u1 = [su, 1]. One split per
   /// column and two per row instead of four of each: the subdivision search's step.
   void quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) const;
+  /// The parts [0, t] and [t, 1] in u (alongU) or in v: one split per column or row.
+  void split(double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper) const;
   /// True when every coefficient is > zero or every one is < −zero: no root in the box.
   bool hasStrictSign(double zero) const;
   double maxAbs() const;
