@@ -298,8 +298,20 @@ private:
   {
     const int ga = pair.foot[0].g, gb = pair.foot[1].g;
     const Bisector bisector(G, ga, gb);
+    // A sample whose front has moved on to the neighbour of the pair's generator is at
+    // that generator's end (front a moves forward, b backward): interpolating from there
+    // keeps the first guess on the branch of the bisector between the samples (the
+    // bisector of two pieces meeting at a smooth vertex has others, with empty disks
+    // nowhere near).
     auto start = [&](const MedialSample& m, int k) {
-      return m.foot[k].g == pair.foot[k].g ? m.foot[k].s : pair.foot[k].s;
+      const int g = pair.foot[k].g;
+      if (m.foot[k].g == g)
+        return m.foot[k].s;
+      if (m.foot[k].g == G[g].next)
+        return 1.0;
+      if (m.foot[k].g == G[g].prev)
+        return 0.0;
+      return pair.foot[k].s;
     };
     auto solve = [&](double w, BisectorState& y) {
       y = { start(p, 0) + w * (start(q, 0) - start(p, 0)), start(p, 1) + w * (start(q, 1) - start(p, 1)),
@@ -338,6 +350,9 @@ private:
     // end is not the boundary).
     if (!converged || y.sa < 0.0 || y.sa > 1.0 || y.sb < 0.0 || y.sb > 1.0 ||
       std::abs(y.r - midRadius(bisector.point(y))) > 1e-12 * Fine + 1e-14 * G.size2D())
+      return false;
+    // On the MAT only if its disk is empty (another branch of the pair's bisector is not).
+    if (G.anyCloserThan(bisector.point(y), y.r * (1.0 - 1e-12) - 1e-13 * G.size2D()))
       return false;
     c.x = bisector.point(y);
     c.radius = y.r;

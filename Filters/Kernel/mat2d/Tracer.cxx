@@ -716,12 +716,11 @@ void Tracer::trace(const Pending& p)
   seg.samples.push_back(sampleOf(start.sample.x, y.r));
 
   const double tolerance = O.tolerance * L;
-  double h = O.fixedStep ? O.step * L : std::max(1e-6 * L, std::min(0.02 * L, 10.0 * tolerance));
-  // Between two straight edges the MAT is a straight line and its radius linear: no step
-  // has a chord error, so start at the longest step instead of growing to it (the disks at
-  // both ends and halfway are checked as on every step).
-  if (!O.fixedStep && G.straight(p.a.g) && G.straight(p.b.g))
-    h = 0.05 * L;
+  // The first step is the longest: a step too long is rejected on its measured chord error,
+  // which also sizes the next try (down to a fifth), while growing to the right step from a
+  // short one costs a sample (two disk tests) per doubling. Between two straight edges the
+  // MAT is a straight line and its radius linear: no step has a chord error at all.
+  double h = O.fixedStep ? O.step * L : 0.05 * L;
   const int checkEvery = O.fixedStep ? std::max(1, static_cast<int>(std::lround(O.branchCheckStep / O.step))) : 1;
   int sinceCheck = 0;
   bool checkEveryStep = !O.fixedStep;
@@ -1460,19 +1459,29 @@ bool Tracer::startAt(int g, double s)
   // tangent at p, |q − p|² / (2 (q − p)·n); the smallest of them is the next radius (one
   // query per round: the first, of the domain's size, asks for the nearest feet only).
   const GeneratorPoint p = G.evaluate(g, s);
+  // Disks touching at p are nested, so emptiness is monotone in r.
+  auto emptyAt = [&](double rr) {
+    return !G.anyCloserThan(p.p + rr * p.n, rr * (1.0 - 1e-12) - 1e-13 * L);
+  };
   double r = L;
   Vec2 x = p.p + r * p.n;
+  bool empty = false;
   for (int it = 0; it < 200; ++it)
   {
     x = p.p + r * p.n;
     const double reach = it == 0 ? G.distance(x) : r;
     double next = r;
-    for (const BoundaryLocation& f : G.footpointsWithin(x, reach * (1.0 + 1e-12) + 1e-12 * L))
+    const BoundaryLocation* nearest = nullptr;
+    const std::vector<BoundaryLocation> feet = G.footpointsWithin(x, reach * (1.0 + 1e-12) + 1e-12 * L);
+    for (const BoundaryLocation& f : feet)
     {
       const Vec2 d = f.point - p.p;
       const double denominator = 2.0 * d.dot(p.n);
-      if (d.norm() > 1e-9 * L && denominator > 0.0)
-        next = std::min(next, d.squaredNorm() / denominator);
+      if (d.norm() > 1e-9 * L && denominator > 0.0 && d.squaredNorm() / denominator < next)
+      {
+        next = d.squaredNorm() / denominator;
+        nearest = &f;
+      }
     }
     if (!(next < r))
       break; // only p, or feet on the circle itself: the disk is maximal
@@ -1480,14 +1489,26 @@ bool Tracer::startAt(int g, double s)
     r = next;
     if (settled)
       break;
+    // The rounds converge only linearly at first: solve for the disk tangent at p and at
+    // the nearest foot's generator (Newton, p held), and stop if that disk is empty — it
+    // touches two points, so it is the maximal one.
+    if (nearest && !nearest->continuum)
+    {
+      BisectorState y{ s, nearest->s, r };
+      const bool solved = Bisector(G, g, nearest->g).correct(y, 0, 1e-14 * L) && y.sb >= 0.0 &&
+        y.sb <= 1.0 && y.r > 0.0 && y.r <= r * (1.0 + 1e-12) &&
+        (G.evaluate(nearest->g, y.sb).p - p.p).norm() > 1e-9 * L;
+      if (solved && emptyAt(y.r))
+      {
+        r = y.r;
+        empty = true;
+        break;
+      }
+    }
   }
   // The iteration may stop short (no second footpoint found where rounding hides it, a
-  // near-circle): make sure the disk is empty. Disks touching at p are nested, so
-  // emptiness is monotone in r and bisection finds the maximal one.
-  auto emptyAt = [&](double rr) {
-    return !G.anyCloserThan(p.p + rr * p.n, rr * (1.0 - 1e-12) - 1e-13 * L);
-  };
-  if (!emptyAt(r))
+  // near-circle): make sure the disk is empty; bisection finds the maximal one.
+  if (!empty && !emptyAt(r))
   {
     double lo = 0.0, hi = r;
     for (int it = 0; it < 200 && hi - lo > 1e-15 * L; ++it)
