@@ -308,6 +308,26 @@ TEST(Sheets, MovedTurnedScaledAndReweightedSolidsHaveTheSameSheets)
   }
 }
 
+// A seam where more than three generators touch (a square tube's axis; a tower standing
+// on a slab, whose seam from the base's corner junction touches two faces and two reflex
+// edges) bounds only the sheets of touches next to each other around it: the sheet of a
+// face and the reflex edge opposite it has no area (they are equidistant only on the seam),
+// and the sheets of the touches the seam's triplet leaves out (the tower's wall) need it
+// as their border.
+TEST(Sheets, DegenerateSeamsBoundTheSheetsOfNeighbouringTouches)
+{
+  const std::vector<std::pair<std::string, std::vector<PatchPiece>>> solids{
+    { "tower on a slab", voxelSolid([](int i, int j, int k) { return k < (i == 0 && j == 0 ? 2 : 1); }, 2, 2, 2) },
+    { "square prism of 2 x 2 x 5 cells", voxelSolid([](int, int, int) { return true; }, 2, 2, 5) },
+    { "cube of 2 x 2 x 2 cells", voxelSolid([](int, int, int) { return true; }, 2, 2, 2) },
+  };
+  for (const auto& [name, pieces] : solids)
+  {
+    const Sheets s = sheetsOf(pieces);
+    expectExactSheets(s, name, 1e-9);
+  }
+}
+
 // Known gap, flagged rather than hidden: random staircases (grid solids whose exact
 // coincidences put several sides and corners at one point) leave some sheet borders that
 // cannot be closed, or close them the wrong way; every such case is caught by one of the

@@ -83,6 +83,9 @@ private:
   bool merging(const MedialBall3D& ball, int& a, int& b) const;
   bool sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b) const;
   int contactCount(const MedialBall3D& ball) const;
+  Vec3List contactPoints(const MedialBall3D& ball) const;
+  std::vector<std::pair<Vec3, std::vector<int>>> contactGenerators(const MedialBall3D& ball) const;
+  std::set<std::pair<int, int>> sheetPairs(const MAT3DSeam& seam, size_t b) const;
   int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
   // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
@@ -216,9 +219,15 @@ bool Tracer::sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b)
   return (foot - ball.x).norm() <= ball.r + Degenerate;
 }
 
-// The distinct points where the ball touches the boundary: its generators' touches and the
-// feet of every face at distance r (to Degenerate).
 int Tracer::contactCount(const MedialBall3D& ball) const
+{
+  return static_cast<int>(contactPoints(ball).size());
+}
+
+// The distinct points where the ball touches the boundary: its generators' touches first
+// (in the ball's order, so point i is generator i's), then the feet of every other face at
+// distance r (to Degenerate).
+Vec3List Tracer::contactPoints(const MedialBall3D& ball) const
 {
   Vec3List points;
   for (int i = 0; i < ball.size(); ++i)
@@ -245,7 +254,7 @@ int Tracer::contactCount(const MedialBall3D& ball) const
       points.push_back(foot);
     }
   }
-  return static_cast<int>(points.size());
+  return points;
 }
 
 // Two of the ball's touchpoints at one point (a and b: their indices in the ball): to the
@@ -999,19 +1008,114 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     fail("3D MAT: more than ", Options.maxSeams, " seams");
 }
 
+// The distinct points where the ball touches the boundary, each with the generators that
+// touch it there, the most particular kind only: a reflex corner rather than the edges
+// and faces that end at it, a reflex edge rather than its two faces (whose feet are on
+// their sides there); coplanar faces meeting at a smooth edge both.
+std::vector<std::pair<Vec3, std::vector<int>>> Tracer::contactGenerators(const MedialBall3D& ball) const
+{
+  const double reach = ball.r + Degenerate;
+  std::vector<int> candidates;
+  for (int f : Tree.candidatesWithin(ball.x, reach))
+  {
+    if (!Generators[f].polygon() && !patchComesWithin(B.faces()[f].patch, ball.x, reach))
+      continue;
+    candidates.push_back(f);
+    for (int side = 0; side < 4; ++side)
+    {
+      const auto it = SideEdge.find({ f, side });
+      if (it == SideEdge.end())
+        continue;
+      candidates.push_back(EdgeGenerator[it->second]);
+      const Edge3D& edge = B.edges()[it->second];
+      for (int v : { edge.startVertex, edge.endVertex })
+        candidates.push_back(v >= 0 ? CornerGenerator[v] : -1);
+    }
+  }
+  for (int g : ball.generators)
+    candidates.push_back(g);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  auto rank = [this](int g) {
+    const GeneratorKind3D k = Generators[g].kind();
+    return k == GeneratorKind3D::ReflexCorner ? 2 : (k == GeneratorKind3D::ReflexEdge ? 1 : 0);
+  };
+  std::vector<std::pair<Vec3, std::vector<int>>> groups;
+  for (int g : candidates)
+  {
+    if (g < 0)
+      continue;
+    const Vec3 foot = Generators[g].nearestPoint(ball.x);
+    if ((foot - ball.x).norm() > reach)
+      continue;
+    auto group = std::find_if(groups.begin(), groups.end(),
+      [&](const std::pair<Vec3, std::vector<int>>& c) { return sameContact(ball, c.first, foot); });
+    if (group == groups.end())
+      groups.push_back({ foot, { g } });
+    else if (rank(g) > rank(group->second.front()))
+      group->second = { g };
+    else if (rank(g) == rank(group->second.front()))
+      group->second.push_back(g);
+  }
+  return groups;
+}
+
+// The pairs of ball b's triplet that bound a sheet along the seam there: all three on a
+// seam of three touchpoints. Along a degenerate seam (more touchpoints than its triplet)
+// the sheets meeting at the seam are those between touchpoints next to each other around
+// it: the touch directions, seen along the seam's tangent, in angular order, and a pair
+// with a touch on either arc between its own two has no sheet there (a staircase's seam
+// where two faces and two reflex edges touch: the face and the edge opposite it are
+// equidistant only on the seam itself).
+std::set<std::pair<int, int>> Tracer::sheetPairs(const MAT3DSeam& seam, size_t b) const
+{
+  const MedialBall3D& ball = seam.balls[b];
+  std::set<std::pair<int, int>> pairs;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      pairs.insert(std::minmax(ball.generators[i], ball.generators[j]));
+  if (seam.touchpoints <= 3 || seam.balls.size() < 3 || ball.r <= Degenerate)
+    return pairs;
+  // The end balls are nodes, touched by every generator there: their order is the node's.
+  if (b == 0 || b + 1 == seam.balls.size())
+    return {};
+  const Vec3 chord = seam.balls[b + 1].x - seam.balls[b - 1].x;
+  const std::vector<std::pair<Vec3, std::vector<int>>> touches = contactGenerators(ball);
+  if (!(chord.norm() > 0.0) || touches.size() <= 3)
+    return pairs;
+  // The touches in angular order about the seam's tangent; consecutive ones bound a sheet.
+  const Vec3 tangent = chord.normalized();
+  const Vec3 u = tangent.unitOrthogonal(), v = tangent.cross(u);
+  std::vector<std::pair<double, size_t>> order;
+  for (size_t k = 0; k < touches.size(); ++k)
+  {
+    const Vec3 d = touches[k].first - ball.x;
+    order.emplace_back(std::atan2(d.dot(v), d.dot(u)), k);
+  }
+  std::sort(order.begin(), order.end());
+  std::set<std::pair<int, int>> adjacent;
+  for (size_t k = 0; k < order.size(); ++k)
+    for (int g : touches[order[k].second].second)
+      for (int h : touches[order[(k + 1) % order.size()].second].second)
+        if (g != h)
+          adjacent.insert(std::minmax(g, h));
+  return adjacent;
+}
+
 // Every pair of faces in a seam's triplet (at any of its balls: a triplet changes across
-// smooth edges) bounds a sheet with that seam; convex edges between the pair close it.
+// smooth edges) whose touches are next to each other around the seam bounds a sheet with
+// that seam; convex edges between the pair close it.
 void Tracer::collectSheets()
 {
   std::map<std::pair<int, int>, MAT3DSheet> sheets;
   for (int s = 0; s < static_cast<int>(Result.seams.size()); ++s)
   {
     std::set<std::pair<int, int>> pairs;
-    for (const MedialBall3D& ball : Result.seams[s].balls)
-      if (ball.size() == 3)
-        for (int i = 0; i < 3; ++i)
-          for (int j = i + 1; j < 3; ++j)
-            pairs.insert(std::minmax(ball.generators[i], ball.generators[j]));
+    const MAT3DSeam& seam = Result.seams[s];
+    for (size_t b = 0; b < seam.balls.size(); ++b)
+      if (seam.balls[b].size() == 3)
+        for (const auto& pair : sheetPairs(seam, b))
+          pairs.insert(pair);
     for (const auto& p : pairs)
     {
       MAT3DSheet& sheet = sheets[p];

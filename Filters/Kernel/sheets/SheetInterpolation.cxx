@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -137,6 +138,14 @@ public:
     addReflexCorners(pieces);
     if (Projected)
       fitPlane(pieces);
+#ifdef EXACTMAT_SHEET_DEBUG
+    std::fprintf(stderr, "%s: %zu pieces\n", name().c_str(), pieces.size());
+    for (const auto& piece : pieces)
+      std::fprintf(stderr, "  %zu points: (%.6g %.6g %.6g) r %.6g q (%.6g %.6g) -> (%.6g %.6g %.6g) r %.6g q (%.6g %.6g)\n",
+        piece.size(), piece.front().x.x(), piece.front().x.y(), piece.front().x.z(), piece.front().r,
+        piece.front().domain.x(), piece.front().domain.y(), piece.back().x.x(), piece.back().x.y(),
+        piece.back().x.z(), piece.back().r, piece.back().domain.x(), piece.back().domain.y());
+#endif
     const std::vector<std::vector<SheetVertex>> loops = chain(pieces);
     triangulate(loops);
     return std::move(Mesh);
@@ -552,6 +561,16 @@ private:
             consider(pieces[j].back(), freeSides(pieces[j]), static_cast<int>(j), true);
           }
           const SheetVertex target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
+#ifdef EXACTMAT_SHEET_DEBUG
+          std::fprintf(stderr, "  gap from (%.6g %.6g %.6g) to (%.6g %.6g %.6g) piece %d shares %d; end sides:", end.x.x(),
+            end.x.y(), end.x.z(), target.x.x(), target.x.y(), target.x.z(), next, (int)bestShares);
+          for (const auto& side : endSides)
+            std::fprintf(stderr, " (%d,%d)", side.first, side.second);
+          std::fprintf(stderr, "; target sides:");
+          for (const auto& side : bestSides)
+            std::fprintf(stderr, " (%d,%d)", side.first, side.second);
+          std::fprintf(stderr, "\n");
+#endif
           // Ends on different sides: the border turns where those sides meet (or along a
           // third side between them).
           if (!bestShares)
