@@ -1079,9 +1079,18 @@ std::set<std::pair<int, int>> Tracer::sheetPairs(const MAT3DSeam& seam, size_t b
   // The end balls are nodes, touched by every generator there: their order is the node's.
   if (b == 0 || b + 1 == seam.balls.size())
     return {};
-  const Vec3 chord = seam.balls[b + 1].x - seam.balls[b - 1].x;
+  // The tangent: the chord between the nearest balls either side that are elsewhere (a
+  // seam that changes triplets lands several balls on the point where it does).
+  size_t before = b - 1, after = b + 1;
+  while (before > 0 && (seam.balls[before].x - ball.x).norm() <= Degenerate)
+    --before;
+  while (after + 1 < seam.balls.size() && (seam.balls[after].x - ball.x).norm() <= Degenerate)
+    ++after;
+  const Vec3 chord = seam.balls[after].x - seam.balls[before].x;
+  if (!(chord.norm() > Degenerate))
+    return {};
   const std::vector<std::pair<Vec3, std::vector<int>>> touches = contactGenerators(ball);
-  if (!(chord.norm() > 0.0) || touches.size() <= 3)
+  if (touches.size() <= 3)
     return pairs;
   // The touches in angular order about the seam's tangent; consecutive ones bound a sheet.
   const Vec3 tangent = chord.normalized();

@@ -888,15 +888,19 @@ private:
       // (a reflex edge's angle or a corner's normal means nothing there).
       const Vec2 qp = (1.0 - s) * from.domain + s * target.domain;
       const double r = (1.0 - s) * from.r + s * target.r;
+      // (A sheet between two reflex entities is solved for both touches: P's is guessed
+      // alike, and at radius 0 its angle too means nothing.)
       const SheetVertex& wide = from.r >= target.r ? from : target;
-      const std::array<Vec2, 3> guesses{ { loop.back().q[O], (1.0 - s) * from.q[O] + s * target.q[O], wide.q[O] } };
+      const std::array<const SheetVertex*, 3> sources{ { &loop.back(), nullptr, &wide } };
       SheetVertex v = from;
       bool solved = false;
-      for (size_t g = 0; g < guesses.size() && !solved; ++g)
+      for (size_t g = 0; g < sources.size() && !solved; ++g)
       {
         v = from;
         v.r = r;
-        v.q[O] = guesses[g];
+        v.x = (1.0 - s) * from.x + s * target.x;
+        for (int k : { O, P })
+          v.q[k] = sources[g] ? sources[g]->q[k] : Vec2((1.0 - s) * from.q[k] + s * target.q[k]);
         solved = solve(qp, v);
       }
       if (!solved)
