@@ -693,9 +693,18 @@ private:
       // A corner at either end adds nothing (the path would run back along the end's own
       // side, enclosing no area).
       const Vec2 c = x.p0 + s * dx;
-      if ((c - from.domain).norm() <= 1e-9 || (c - to.domain).norm() <= 1e-9)
+      const double same = slack(1e-9, 1e3) / Size; // one domain vertex (as the loop's cleaning has it)
+      if ((c - from.domain).norm() <= same || (c - to.domain).norm() <= same)
         return false;
       corner = guess;
+#ifdef EXACTMAT_SHEET_DEBUG
+      {
+        SheetVertex t = guess;
+        const bool ok = solve(c, t);
+        std::fprintf(stderr, "   corner at [%.4g %.4g]: solved %d medial %d (%.4g %.4g %.4g) r %.4g\n", c.x(), c.y(), (int)ok,
+          ok ? (int)medial(t) : -1, t.x.x(), t.x.y(), t.x.z(), t.r);
+      }
+#endif
       if (!solve(c, corner) || !medial(corner))
         return false;
       corner.border = true;
@@ -711,6 +720,50 @@ private:
     SheetVertex guess = from;
     guess.r = 0.5 * (from.r + to.r);
     guess.q[O] = 0.5 * (from.q[O] + to.q[O]);
+    for (const auto& side : borderSides())
+      if (Segment g; segment(side, guess, g))
+        middle.push_back(g);
+    // A side of a group of coplanar faces is the sides of several faces in one line: an
+    // end's segment goes on through the collinear sides that continue it (the corner where
+    // the border turns may lie on another face's part of that line).
+    auto extend = [&middle](Segment& g) {
+      const double eps = 1e-9;
+      for (bool grown = true; grown;)
+      {
+        grown = false;
+        const Vec2 d = g.p1 - g.p0;
+        const double length = d.norm();
+        if (!(length > 0.0))
+          return;
+        auto onLine = [&](const Vec2& q) {
+          const Vec2 w = q - g.p0;
+          return std::abs(d.x() * w.y() - d.y() * w.x()) <= eps * length * (1.0 + w.norm());
+        };
+        for (const Segment& m : middle)
+        {
+          if (!onLine(m.p0) || !onLine(m.p1))
+            continue;
+          const double s0 = (m.p0 - g.p0).dot(d) / (length * length), s1 = (m.p1 - g.p0).dot(d) / (length * length);
+          const double lo = std::min(s0, s1), hi = std::max(s0, s1);
+          if (lo < -eps && hi >= -eps)
+          {
+            g.p0 += lo * d;
+            grown = true;
+            break;
+          }
+          if (hi > 1.0 + eps && lo <= 1.0 + eps)
+          {
+            g.p1 = g.p0 + hi * d;
+            grown = true;
+            break;
+          }
+        }
+      }
+    };
+    for (Segment& g : first)
+      extend(g);
+    for (Segment& g : last)
+      extend(g);
     std::vector<SheetVertex> best;
     double shortest = std::numeric_limits<double>::infinity();
     auto offer = [&](const std::vector<SheetVertex>& path) {
@@ -734,9 +787,15 @@ private:
           offer({ c });
     if (!best.empty())
       return best;
-    for (const auto& side : borderSides())
-      if (Segment g; segment(side, guess, g))
-        middle.push_back(g);
+#ifdef EXACTMAT_SHEET_DEBUG
+    for (const auto* list : { &first, &middle, &last })
+    {
+      std::fprintf(stderr, "   %s:", list == &first ? "first" : (list == &last ? "last" : "middle"));
+      for (const Segment& g : *list)
+        std::fprintf(stderr, " (%d,%d) [%.4g %.4g]-[%.4g %.4g]", g.side.first, g.side.second, g.p0.x(), g.p0.y(), g.p1.x(), g.p1.y());
+      std::fprintf(stderr, "\n");
+    }
+#endif
     for (const Segment& x : first)
       for (const Segment& m : middle)
       {
