@@ -796,16 +796,69 @@ private:
       std::fprintf(stderr, "\n");
     }
 #endif
+    // Paths through sides between the ends' own, fewest corners first (the border may
+    // follow several sides: around the L-shaped footprint of a tower on a slab it turns
+    // three times), the shortest of those. A level keeps, per side, the shortest path that
+    // has turned onto it.
+    struct Partial
+    {
+      std::vector<SheetVertex> path;
+      double length = std::numeric_limits<double>::infinity();
+    };
+    const double same = slack(1e-9, 1e3) / Size;
+    std::vector<Partial> level(middle.size());
     for (const Segment& x : first)
-      for (const Segment& m : middle)
+      for (size_t m = 0; m < middle.size(); ++m)
       {
-        SheetVertex c1;
-        if (m.side == x.side || !meet(x, m, guess, c1))
+        SheetVertex c;
+        if (middle[m].side == x.side || !meet(x, middle[m], guess, c))
           continue;
-        for (const Segment& y : last)
-          if (SheetVertex c2; m.side != y.side && meet(m, y, c1, c2))
-            offer({ c1, c2 });
+        const double length = (c.domain - from.domain).norm();
+        if (length < level[m].length)
+          level[m] = Partial{ { c }, length };
       }
+    constexpr int MaxCorners = 8;
+    for (int corners = 2; corners <= MaxCorners; ++corners)
+    {
+      bool any = false;
+      for (size_t m = 0; m < middle.size(); ++m)
+      {
+        if (level[m].path.empty())
+          continue;
+        any = true;
+        for (const Segment& y : last)
+          if (SheetVertex c; middle[m].side != y.side && meet(middle[m], y, level[m].path.back(), c))
+          {
+            std::vector<SheetVertex> path = level[m].path;
+            path.push_back(c);
+            offer(path);
+          }
+      }
+      if (!best.empty() || !any || corners == MaxCorners)
+        break;
+      std::vector<Partial> next(middle.size());
+      for (size_t m = 0; m < middle.size(); ++m)
+      {
+        if (level[m].path.empty())
+          continue;
+        const SheetVertex& at = level[m].path.back();
+        for (size_t j = 0; j < middle.size(); ++j)
+        {
+          SheetVertex c;
+          if (middle[j].side == middle[m].side || !meet(middle[m], middle[j], at, c) ||
+            (c.domain - at.domain).norm() <= same)
+            continue;
+          const double length = level[m].length + (c.domain - at.domain).norm();
+          if (length < next[j].length)
+          {
+            next[j].path = level[m].path;
+            next[j].path.push_back(c);
+            next[j].length = length;
+          }
+        }
+      }
+      level = std::move(next);
+    }
     return best;
   }
 
