@@ -726,7 +726,8 @@ private:
     // A side of a group of coplanar faces is the sides of several faces in one line: an
     // end's segment goes on through the collinear sides that continue it (the corner where
     // the border turns may lie on another face's part of that line).
-    auto extend = [&middle](Segment& g) {
+    const std::vector<Segment> sides = middle;
+    auto extend = [&sides](Segment& g) {
       const double eps = 1e-9;
       for (bool grown = true; grown;)
       {
@@ -739,7 +740,7 @@ private:
           const Vec2 w = q - g.p0;
           return std::abs(d.x() * w.y() - d.y() * w.x()) <= eps * length * (1.0 + w.norm());
         };
-        for (const Segment& m : middle)
+        for (const Segment& m : sides)
         {
           if (!onLine(m.p0) || !onLine(m.p1))
             continue;
@@ -760,10 +761,9 @@ private:
         }
       }
     };
-    for (Segment& g : first)
-      extend(g);
-    for (Segment& g : last)
-      extend(g);
+    for (auto* list : { &first, &middle, &last })
+      for (Segment& g : *list)
+        extend(g);
     std::vector<SheetVertex> best;
     double shortest = std::numeric_limits<double>::infinity();
     auto offer = [&](const std::vector<SheetVertex>& path) {
