@@ -314,12 +314,25 @@ TEST(Sheets, MovedTurnedScaledAndReweightedSolidsHaveTheSameSheets)
 // face and the reflex edge opposite it has no area (they are equidistant only on the seam),
 // and the sheets of the touches the seam's triplet leaves out (the tower's wall) need it
 // as their border.
-TEST(Sheets, DegenerateSeamsBoundTheSheetsOfNeighbouringTouches)
+TEST(Sheets, DegenerateSeamsAndGridStaircasesAreComplete)
 {
+  // Columns of unit cells, heights[i][j] high.
+  auto columns = [](std::vector<std::vector<int>> heights) {
+    const int n = static_cast<int>(heights.size()), top = heights[0][0];
+    return voxelSolid([heights](int i, int j, int k) { return k < heights[i][j]; }, n, n, top);
+  };
   const std::vector<std::pair<std::string, std::vector<PatchPiece>>> solids{
-    { "tower on a slab", voxelSolid([](int i, int j, int k) { return k < (i == 0 && j == 0 ? 2 : 1); }, 2, 2, 2) },
+    { "tower on a slab", columns({ { 2, 1 }, { 1, 1 } }) },
     { "square prism of 2 x 2 x 5 cells", voxelSolid([](int, int, int) { return true; }, 2, 2, 5) },
     { "cube of 2 x 2 x 2 cells", voxelSolid([](int, int, int) { return true; }, 2, 2, 2) },
+    // Staircases whose borders turn along sides of several coplanar cells: a tower on
+    // steps (a seam where two reflex edges meet two faces), an L-shaped tower beside a
+    // lower cell (a mid-plane sheet whose border turns at another cell's side), an L of
+    // three cells on a 4 x 4 slab (the slab's mid-sheet turns three times around it).
+    { "tower on steps", columns({ { 3, 2 }, { 2, 1 } }) },
+    { "L-shaped tower beside a low cell", columns({ { 3, 3 }, { 3, 1 } }) },
+    { "L of three cells on a 4 x 4 slab",
+      columns({ { 2, 2, 1, 1 }, { 2, 1, 1, 1 }, { 1, 1, 1, 1 }, { 1, 1, 1, 1 } }) },
   };
   for (const auto& [name, pieces] : solids)
   {
