@@ -83,7 +83,6 @@ private:
   bool merging(const MedialBall3D& ball, int& a, int& b) const;
   bool sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b) const;
   int contactCount(const MedialBall3D& ball) const;
-  Vec3List contactPoints(const MedialBall3D& ball) const;
   std::vector<std::pair<Vec3, std::vector<int>>> contactGenerators(const MedialBall3D& ball) const;
   std::set<std::pair<int, int>> sheetPairs(const MAT3DSeam& seam, size_t b) const;
   int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
@@ -219,15 +218,9 @@ bool Tracer::sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b)
   return (foot - ball.x).norm() <= ball.r + Degenerate;
 }
 
+// The distinct points where the ball touches the boundary: its generators' touches and the
+// feet of every face at distance r (to Degenerate).
 int Tracer::contactCount(const MedialBall3D& ball) const
-{
-  return static_cast<int>(contactPoints(ball).size());
-}
-
-// The distinct points where the ball touches the boundary: its generators' touches first
-// (in the ball's order, so point i is generator i's), then the feet of every other face at
-// distance r (to Degenerate).
-Vec3List Tracer::contactPoints(const MedialBall3D& ball) const
 {
   Vec3List points;
   for (int i = 0; i < ball.size(); ++i)
@@ -254,7 +247,7 @@ Vec3List Tracer::contactPoints(const MedialBall3D& ball) const
       points.push_back(foot);
     }
   }
-  return points;
+  return static_cast<int>(points.size());
 }
 
 // Two of the ball's touchpoints at one point (a and b: their indices in the ball): to the

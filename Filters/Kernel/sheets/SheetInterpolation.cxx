@@ -680,6 +680,8 @@ private:
       out.side = side;
       return sideLine(side, near, out.p0, out.p1);
     };
+    // Domain points this close are one vertex (as the loop's cleaning has it).
+    const double same = slack(1e-9, 1e3) / Size;
     // Where two segments cross, as a sheet point.
     auto meet = [&](const Segment& x, const Segment& y, const SheetVertex& guess, SheetVertex& corner) {
       const Vec2 dx = x.p1 - x.p0, dy = y.p1 - y.p0;
@@ -693,18 +695,9 @@ private:
       // A corner at either end adds nothing (the path would run back along the end's own
       // side, enclosing no area).
       const Vec2 c = x.p0 + s * dx;
-      const double same = slack(1e-9, 1e3) / Size; // one domain vertex (as the loop's cleaning has it)
       if ((c - from.domain).norm() <= same || (c - to.domain).norm() <= same)
         return false;
       corner = guess;
-#ifdef EXACTMAT_SHEET_DEBUG
-      {
-        SheetVertex t = guess;
-        const bool ok = solve(c, t);
-        std::fprintf(stderr, "   corner at [%.4g %.4g]: solved %d medial %d (%.4g %.4g %.4g) r %.4g\n", c.x(), c.y(), (int)ok,
-          ok ? (int)medial(t) : -1, t.x.x(), t.x.y(), t.x.z(), t.r);
-      }
-#endif
       if (!solve(c, corner) || !medial(corner))
         return false;
       corner.border = true;
@@ -805,7 +798,6 @@ private:
       std::vector<SheetVertex> path;
       double length = std::numeric_limits<double>::infinity();
     };
-    const double same = slack(1e-9, 1e3) / Size;
     std::vector<Partial> level(middle.size());
     for (const Segment& x : first)
       for (size_t m = 0; m < middle.size(); ++m)
