@@ -367,44 +367,35 @@ bool quadraticNegativeSomewhere(const BernsteinPoly& h)
 
 // The Bernstein coefficients of |C(t)·w(t) − q·w(t)|² − r²·w(t)² (degree 2p) into h[0 … 2p],
 // without allocating: the emptiness test's polynomial, asked for at every tracing step.
-// The arithmetic is BernsteinPoly's own, operation for operation (products d_k·d_k summed
-// in i-major order with C(p,i)·C(p,j), divided by C(2p,m); the three squares added, then
-// r²·(w·w) subtracted), so the answer is bit-identical to building the polynomials.
+// With d_i = P_i·w_i − q·w_i, the product of two degree-p Bernstein sums has coefficients
+// h_m = Σ_{i+j=m} C(p,i)·C(p,j)/C(2p,m) · (d_i·d_j − r²·w_i·w_j); the pairs i < j and j < i
+// are one term counted twice, and the radius is subtracted inside each term (where its
+// cancellation against d_i·d_j is exact to rounding) rather than from the sums.
 int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double radius, double* h)
 {
   const int p = curve.degree(), n = 2 * p;
   const Vec4List& hp = curve.homogeneousPoints();
-  double d[3][MaxDegree + 1], w[MaxDegree + 1];
+  double d[MaxDegree + 1][3], w[MaxDegree + 1];
   for (int i = 0; i <= p; ++i)
   {
-    for (int k = 0; k < 3; ++k)
-      d[k][i] = hp[i](k) - q(k) * hp[i].w();
     w[i] = hp[i].w();
-  }
-  double sq[3][2 * MaxDegree + 1], ww[2 * MaxDegree + 1];
-  for (int m = 0; m <= n; ++m)
-  {
-    sq[0][m] = sq[1][m] = sq[2][m] = ww[m] = 0.0;
-  }
-  for (int i = 0; i <= p; ++i)
-  {
-    for (int j = 0; j <= p; ++j)
-    {
-      const double b = binomial(p, i) * binomial(p, j);
-      for (int k = 0; k < 3; ++k)
-        sq[k][i + j] += b * d[k][i] * d[k][j];
-      ww[i + j] += b * w[i] * w[j];
-    }
+    for (int k = 0; k < 3; ++k)
+      d[i][k] = hp[i](k) - q(k) * w[i];
   }
   const double r2 = radius * radius;
   for (int m = 0; m <= n; ++m)
+    h[m] = 0.0;
+  for (int i = 0; i <= p; ++i)
   {
-    const double c = binomial(n, m);
-    double v = sq[0][m] / c;
-    v += 1.0 * (sq[1][m] / c);
-    v += 1.0 * (sq[2][m] / c);
-    h[m] = v + -1.0 * (r2 * (ww[m] / c));
+    const double bi = binomial(p, i);
+    for (int j = i; j <= p; ++j)
+    {
+      const double e = d[i][0] * d[j][0] + d[i][1] * d[j][1] + d[i][2] * d[j][2] - r2 * (w[i] * w[j]);
+      h[i + j] += (i == j ? 1.0 : 2.0) * bi * binomial(p, j) * e;
+    }
   }
+  for (int m = 1; m < n; ++m)
+    h[m] /= binomial(n, m);
   return n;
 }
 
@@ -456,7 +447,8 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
 {
   if (curve.degree() == 1 || !(touch > 0.0 && touch < 1.0))
     return curveComesWithin(curve, query, radius);
-  if (!(radius > 0.0) || distanceToBox(curve.boundingBox(), query) >= radius)
+  // (No bounding-box test: the disk touches the curve at `touch`.)
+  if (!(radius > 0.0))
     return false;
   double c[2 * MaxDegree + 1];
   const int n = squaredDistanceMinusRadius(curve, query, radius, c);

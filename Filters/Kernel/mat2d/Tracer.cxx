@@ -642,8 +642,11 @@ bool Tracer::lmpcBetween(
     if (G[g].kind != GeneratorKind::Edge)
       return false;
     const double lo = range.first, hi = std::max(range.first, range.second);
-    // Sample, then refine the best sample by golden-section search.
-    const int n = 32;
+    // Sample, then refine the best sample by golden-section search. A conic arc (degree
+    // ≤ 2: less than half an ellipse, or a parabola's or hyperbola's arc) has at most one
+    // vertex of maximal curvature inside, so a few samples bracket it; other curves may
+    // wiggle and get more.
+    const int n = G.boundary().edges()[G[g].edge].curve.degree() <= 2 ? 8 : 32;
     double bestS = lo, bestK = -1e300;
     for (int k = 0; k <= n; ++k)
     {
@@ -659,10 +662,23 @@ bool Tracer::lmpcBetween(
     // parameter: the centre of curvature is stationary at the maximum, so it moves by the
     // square of that (and the curvature's rounding hides the peak below ~1e-8 anyway).
     double l = std::max(lo, bestS - (hi - lo) / n), h = std::min(hi, bestS + (hi - lo) / n);
+    // The best sample at an end of the range that is no lower than its neighbour 1e-10
+    // inside is the maximum to that precision (the search is unimodal in [l, h]): an
+    // ellipse's vertex where two of its arcs meet, without forty golden sections.
+    const double probe = 1e-10;
+    if (bestS == lo && h - l > 2.0 * probe && G.evaluate(g, lo + probe).curvature <= bestK)
+      h = lo + probe;
+    else if (bestS == hi && h - l > 2.0 * probe && G.evaluate(g, hi - probe).curvature <= bestK)
+      l = hi - probe;
     const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
     double m1 = h - phi * (h - l), m2 = l + phi * (h - l);
-    double k1 = G.evaluate(g, m1).curvature, k2 = G.evaluate(g, m2).curvature;
-    for (int it = 0; it < 60 && h - l > 1e-10; ++it)
+    double k1 = 0.0, k2 = 0.0;
+    if (h - l > 2.0 * probe)
+    {
+      k1 = G.evaluate(g, m1).curvature;
+      k2 = G.evaluate(g, m2).curvature;
+    }
+    for (int it = 0; it < 60 && h - l > 2.0 * probe; ++it)
     {
       if (k1 < k2)
       {
