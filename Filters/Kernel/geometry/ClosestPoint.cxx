@@ -347,12 +347,29 @@ std::vector<CurveFootpoint> curveFootpoints(
 
 namespace
 {
+// The two halves of Σ h_k B_{k,n} at t (de Casteljau), into left and right.
+void splitBernstein(const double* h, int n, double t, double* left, double* right)
+{
+  double b[2 * MaxDegree + 1];
+  std::copy(h, h + n + 1, b);
+  const double s = 1.0 - t;
+  left[0] = b[0];
+  right[n] = b[n];
+  for (int k = 1; k <= n; ++k)
+  {
+    for (int i = 0; i <= n - k; ++i)
+      b[i] = s * b[i] + t * b[i + 1];
+    left[k] = b[0];
+    right[n - k] = b[n - k];
+  }
+}
+
 // The minimum of a quadratic in Bernstein form on [0, 1], in closed form: a straight edge's
 // squared distance. Subdividing a nearly tangent one costs up to 40 levels, and a regular
 // n-gon's centre meets n of them in every disk.
-bool quadraticNegativeSomewhere(const BernsteinPoly& h)
+bool quadraticNegativeSomewhere(const double* h)
 {
-  const double c0 = h.c[0], c1 = h.c[1], c2 = h.c[2];
+  const double c0 = h[0], c1 = h[1], c2 = h[2];
   if (c0 < 0.0 || c2 < 0.0)
     return true;
   const double a = c0 - 2.0 * c1 + c2; // h'' / 2
@@ -383,6 +400,20 @@ int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double r
       d[i][k] = hp[i](k) - q(k) * w[i];
   }
   const double r2 = radius * radius;
+  auto term = [&](int i, int j) {
+    return d[i][0] * d[j][0] + d[i][1] * d[j][1] + d[i][2] * d[j][2] - r2 * (w[i] * w[j]);
+  };
+  if (p == 2)
+  {
+    // The conics of most profiles, in closed form: C(2,i)·C(2,j)/C(4,m) is 1 but for
+    // m = 2, where the pairs (0, 2), (2, 0) and (1, 1) weigh 1/6, 1/6 and 4/6.
+    h[0] = term(0, 0);
+    h[1] = term(0, 1);
+    h[2] = (term(0, 2) + 2.0 * term(1, 1)) / 3.0;
+    h[3] = term(1, 2);
+    h[4] = term(2, 2);
+    return n;
+  }
   for (int m = 0; m <= n; ++m)
     h[m] = 0.0;
   for (int i = 0; i <= p; ++i)
@@ -390,8 +421,7 @@ int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double r
     const double bi = binomial(p, i);
     for (int j = i; j <= p; ++j)
     {
-      const double e = d[i][0] * d[j][0] + d[i][1] * d[j][1] + d[i][2] * d[j][2] - r2 * (w[i] * w[j]);
-      h[i + j] += (i == j ? 1.0 : 2.0) * bi * binomial(p, j) * e;
+      h[i + j] += (i == j ? 1.0 : 2.0) * bi * binomial(p, j) * term(i, j);
     }
   }
   for (int m = 1; m < n; ++m)
@@ -399,22 +429,23 @@ int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double r
   return n;
 }
 
-bool negativeSomewhere(const BernsteinPoly& h, int depth)
+// Is Σ h_k B_{k,n}(t) < 0 somewhere on [0, 1]? Halving on the stack (this is every
+// emptiness test's work).
+bool negativeSomewhere(const double* h, int n, int depth)
 {
-  if (depth == 0 && h.c.size() == 3)
+  if (depth == 0 && n == 2)
     return quadraticNegativeSomewhere(h);
-  const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
-  if (*mn >= 0.0)
+  if (*std::min_element(h, h + n + 1) >= 0.0)
     return false; // the coefficients bound h from below
-  if (h.c.front() < 0.0 || h.c.back() < 0.0)
+  if (h[0] < 0.0 || h[n] < 0.0)
     return true; // an end of this piece is inside
   if (depth >= 40)
     return false;
-  BernsteinPoly left, right;
-  h.split(0.5, left, right);
-  if (left.c.back() < 0.0)
+  double left[2 * MaxDegree + 1], right[2 * MaxDegree + 1];
+  splitBernstein(h, n, 0.5, left, right);
+  if (left[n] < 0.0)
     return true; // the midpoint is inside
-  return negativeSomewhere(left, depth + 1) || negativeSomewhere(right, depth + 1);
+  return negativeSomewhere(left, n, depth + 1) || negativeSomewhere(right, n, depth + 1);
 }
 } // namespace
 
@@ -436,11 +467,7 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
   }
   double h[2 * MaxDegree + 1];
   const int n = squaredDistanceMinusRadius(curve, query, radius, h);
-  if (*std::min_element(h, h + n + 1) >= 0.0)
-    return false; // the common answer, without building a polynomial
-  BernsteinPoly poly;
-  poly.c.assign(h, h + n + 1);
-  return negativeSomewhere(poly, 0);
+  return negativeSomewhere(h, n, 0);
 }
 
 bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius, double touch)
@@ -454,10 +481,9 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
   const int n = squaredDistanceMinusRadius(curve, query, radius, c);
   if (*std::min_element(c, c + n + 1) >= 0.0)
     return false;
-  BernsteinPoly h, left, right;
-  h.c.assign(c, c + n + 1);
-  h.split(touch, left, right);
-  return negativeSomewhere(left, 1) || negativeSomewhere(right, 1);
+  double left[2 * MaxDegree + 1], right[2 * MaxDegree + 1];
+  splitBernstein(c, n, touch, left, right);
+  return negativeSomewhere(left, n, 1) || negativeSomewhere(right, n, 1);
 }
 
 CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query)

@@ -174,14 +174,15 @@ bool Generators::straight(int gi) const
   return List[gi].straight;
 }
 
-double Generators::distance(const Vec2& x) const
+double Generators::distance(const Vec2& x, Vec2* nearest) const
 {
   const Vec3 q(x.x(), x.y(), 0.0);
   const auto& edges = Boundary->edges();
   double d = 0.0;
   // An edge in pieces is asked once for each piece the search reaches: remember the last.
   int last = -1;
-  double lastDistance = 0.0;
+  CurveFootpoint lastFoot, best;
+  best.distance = INFINITY;
   Tree.nearest(
     q,
     [&](int item) {
@@ -189,11 +190,15 @@ double Generators::distance(const Vec2& x) const
       if (e != last)
       {
         last = e;
-        lastDistance = closestPoint(edges[e].curve, q).distance;
+        lastFoot = closestPoint(edges[e].curve, q);
+        if (lastFoot.distance < best.distance)
+          best = lastFoot;
       }
-      return lastDistance;
+      return lastFoot.distance;
     },
     &d);
+  if (nearest)
+    *nearest = xy(best.point);
   return d;
 }
 

@@ -71,8 +71,9 @@ public:
 
   GeneratorPoint evaluate(int g, double s) const;
 
-  /// Distance from x to the whole boundary (exact, global).
-  double distance(const Vec2& x) const;
+  /// Distance from x to the whole boundary (exact, global); `nearest`, if given, receives
+  /// a boundary point at that distance.
+  double distance(const Vec2& x, Vec2* nearest = nullptr) const;
   /// Generator g is a straight edge (degree 1, uniform weights).
   bool straight(int g) const;
 

@@ -721,12 +721,24 @@ void Tracer::trace(const Pending& p)
   std::fprintf(stderr, "trace from node %d (%.12g %.12g r %.12g): a g%d s%.12g  b g%d s%.12g\n", p.node,
     start.sample.x.x(), start.sample.x.y(), start.sample.radius, a.g, a.s, b.g, b.s);
 #endif
+  // Both generators where the last accepted step's corrector left them: the sample's
+  // footpoints and the next step's point, tangent and weights are there (four
+  // evaluations per sample saved; the same values, bit for bit).
+  struct
+  {
+    int ga = -1, gb = -1;
+    double sa = 0.0, sb = 0.0;
+    GeneratorPoint pa, pb;
+  } last;
+  auto evaluateA = [&](double s) { return a.g == last.ga && s == last.sa ? last.pa : G.evaluate(a.g, s); };
+  auto evaluateB = [&](double s) { return b.g == last.gb && s == last.sb ? last.pb : G.evaluate(b.g, s); };
   auto sampleOf = [&](const Vec2& x, double r) {
     MedialSample s;
     s.x = x;
     s.radius = r;
-    s.foot[0] = location(a.g, a.s);
-    s.foot[1] = location(b.g, b.s);
+    const GeneratorPoint pa = evaluateA(a.s), pb = evaluateB(b.s);
+    s.foot[0] = { a.g, a.s, pa.p, pa.n, false };
+    s.foot[1] = { b.g, b.s, pb.p, pb.n, false };
     return s;
   };
   seg.samples.push_back(sampleOf(start.sample.x, y.r));
@@ -922,7 +934,7 @@ void Tracer::trace(const Pending& p)
     const Bisector B(G, a.g, b.g);
     // Both generators at y, once: the point, the tangent, the motion and the step's
     // weights all start from them (each used to evaluate them again).
-    const GeneratorPoint ga0 = G.evaluate(a.g, y.sa), gb0 = G.evaluate(b.g, y.sb);
+    const GeneratorPoint ga0 = evaluateA(y.sa), gb0 = evaluateB(y.sb);
     const Vec2 x0 = ga0.p + y.r * ga0.n;
 
     // Closing in on a point of locally maximal positive curvature: end at its centre.
@@ -1382,6 +1394,7 @@ void Tracer::trace(const Pending& p)
       }
       // Accept the step.
       advanceTo(y1);
+      last = { a.g, b.g, y1.sa, y1.sb, ga1, gb1 };
       aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 10 * CoverageSlop;
       bLeftStart = bLeftStart || b.g != p.b.g || std::abs(b.s - p.b.s) > 10 * CoverageSlop;
       seg.samples.push_back(sampleOf(x1, y1.r));
@@ -1485,8 +1498,25 @@ bool Tracer::startAt(int g, double s)
   for (int it = 0; it < 200; ++it)
   {
     x = p.p + r * p.n;
-    const double reach = it == 0 ? G.distance(x) : r;
     double next = r;
+    if (it == 0)
+    {
+      // The first disk, of the domain's size, needs only the nearest boundary point.
+      Vec2 q;
+      G.distance(x, &q);
+      const Vec2 d = q - p.p;
+      const double denominator = 2.0 * d.dot(p.n);
+      if (d.norm() > 1e-9 * L && denominator > 0.0 && d.squaredNorm() / denominator < next)
+        next = d.squaredNorm() / denominator;
+#ifdef EXACTMAT_TRACE_DEBUG
+      std::fprintf(stderr, "  shrinking ball round 0: r %.15g, nearest (%.15g %.15g), next %.15g\n", r, q.x(), q.y(), next);
+#endif
+      if (!(next < r))
+        break;
+      r = next;
+      continue;
+    }
+    const double reach = r;
     const BoundaryLocation* nearest = nullptr;
     const std::vector<BoundaryLocation> feet = G.footpointsWithin(x, reach * (1.0 + 1e-12) + 1e-12 * L);
     for (const BoundaryLocation& f : feet)
@@ -1499,6 +1529,9 @@ bool Tracer::startAt(int g, double s)
         nearest = &f;
       }
     }
+#ifdef EXACTMAT_TRACE_DEBUG
+    std::fprintf(stderr, "  shrinking ball round %d: r %.15g, %zu feet within %.15g, next %.15g\n", it, r, feet.size(), reach, next);
+#endif
     if (!(next < r))
       break; // only p, or feet on the circle itself: the disk is maximal
     const bool settled = r - next <= 1e-15 * L;
