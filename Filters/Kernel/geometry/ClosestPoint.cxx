@@ -429,6 +429,55 @@ int squaredDistanceMinusRadius(const BezierCurve& curve, const Vec3& q, double r
   return n;
 }
 
+// A sufficient test that h = Σ c_k B_{k,n}(t) ≥ 0 on [0, 1] when h has a (near) double
+// root at τ, the touch of a tracing step's disk: with h(τ + u) = a₀ + a₁u + u²·q(u) and
+// q ≥ q_min > 0 on u ∈ [−τ, 1 − τ], h ≥ a₀ − a₁²/(4 q_min), which the disk's margin keeps
+// positive. The Taylor coefficients come from the power form (n ≤ 8: well conditioned
+// on [0, 1]) shifted to τ. False means "not shown": the caller subdivides.
+bool staysOutsideAroundTouch(const double* c, int n, double tau)
+{
+  if (n < 2 || n > 8)
+    return false;
+  // Power form: the k-th coefficient is C(n, k)·Δᵏc₀ (forward differences).
+  double a[9], d[9];
+  std::copy(c, c + n + 1, d);
+  for (int k = 0; k <= n; ++k)
+  {
+    a[k] = binomial(n, k) * d[0];
+    for (int i = 0; i < n - k; ++i)
+      d[i] = d[i + 1] - d[i];
+  }
+  for (int i = 0; i < n; ++i) // Taylor shift to τ (repeated synthetic division)
+    for (int j = n - 1; j >= i; --j)
+      a[j] += tau * a[j + 1];
+  const double lo = -tau, hi = 1.0 - tau;
+  double qMin;
+  if (n == 4)
+  {
+    // q(u) = a₂ + a₃u + a₄u²: its least value on [lo, hi], in closed form.
+    auto q = [&](double u) { return a[2] + u * (a[3] + u * a[4]); };
+    qMin = std::min(q(lo), q(hi));
+    if (a[4] > 0.0)
+    {
+      const double u = -a[3] / (2.0 * a[4]);
+      if (u > lo && u < hi)
+        qMin = std::min(qMin, q(u));
+    }
+  }
+  else
+  {
+    const double reach = std::max(tau, 1.0 - tau);
+    qMin = a[2];
+    double power = 1.0;
+    for (int k = 3; k <= n; ++k)
+    {
+      power *= reach;
+      qMin -= std::abs(a[k]) * power;
+    }
+  }
+  return qMin > 0.0 && a[0] > 0.0 && a[1] * a[1] < 4.0 * qMin * a[0];
+}
+
 // Is Σ h_k B_{k,n}(t) < 0 somewhere on [0, 1]? Halving on the stack (this is every
 // emptiness test's work).
 bool negativeSomewhere(const double* h, int n, int depth)
@@ -480,6 +529,8 @@ bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius
   double c[2 * MaxDegree + 1];
   const int n = squaredDistanceMinusRadius(curve, query, radius, c);
   if (*std::min_element(c, c + n + 1) >= 0.0)
+    return false;
+  if (staysOutsideAroundTouch(c, n, touch))
     return false;
   double left[2 * MaxDegree + 1], right[2 * MaxDegree + 1];
   splitBernstein(c, n, touch, left, right);
