@@ -130,33 +130,62 @@ double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, dou
   return t;
 }
 
-// Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) by Illinois, to a
-// width of 1e-12: polishCurve's Newton steps on the distance itself finish the job.
+// g(t) and g'(t) by one de Casteljau pass: the last level's two points give both.
+double valueAndSlope(const BernsteinPoly& g, double t, double& slope)
+{
+  const int n = g.degree();
+  if (n < 1)
+  {
+    slope = 0.0;
+    return n < 0 ? 0.0 : g.c[0];
+  }
+  double b[96];
+  std::copy(g.c.begin(), g.c.end(), b);
+  const double s = 1.0 - t;
+  for (int r = 1; r < n; ++r)
+    for (int i = 0; i <= n - r; ++i)
+      b[i] = s * b[i] + t * b[i + 1];
+  slope = n * (b[1] - b[0]);
+  return s * b[0] + t * b[1];
+}
+
+// Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) to ~1e-13 of the
+// parameter: Newton steps kept inside the shrinking bracket, halving where a step would
+// leave it or not halve the step before (a root of odd multiplicity > 1 converges only
+// linearly under Newton). polishCurve's Newton steps on the distance finish the job.
 double bracketRoot(const BernsteinPoly& g, double a, double b, double ga, double gb)
 {
+  double t = (a * gb - b * ga) / (gb - ga);
+  if (!(t > a && t < b))
+    t = 0.5 * (a + b);
+  double dxOld = b - a, dx = dxOld;
   for (int it = 0; it < 100 && b - a > 1e-12; ++it)
   {
-    double m = (a * gb - b * ga) / (gb - ga);
-    if (!(m > a && m < b))
+    double slope = 0.0;
+    const double gt = valueAndSlope(g, t, slope);
+    if (gt == 0.0)
+      return t;
+    if ((gt < 0.0) == (ga < 0.0))
     {
-      m = 0.5 * (a + b);
+      a = t;
+      ga = gt;
     }
-    const double gm = g(m);
-    if (gm == 0.0)
+    else
+      b = t;
+    const double newton = slope != 0.0 ? t - gt / slope : a - 1.0;
+    if (!(newton > a && newton < b) || std::abs(2.0 * gt) > std::abs(dxOld * slope))
     {
-      return m;
-    }
-    if ((gm < 0.0) == (ga < 0.0))
-    {
-      a = m;
-      ga = gm;
-      gb *= 0.5;
+      dxOld = dx;
+      dx = 0.5 * (b - a);
+      t = a + dx;
     }
     else
     {
-      b = m;
-      gb = gm;
-      ga *= 0.5;
+      dxOld = dx;
+      dx = t - newton;
+      t = newton;
+      if (std::abs(dx) < 1e-14)
+        return t;
     }
   }
   return 0.5 * (a + b);

@@ -664,21 +664,23 @@ bool Tracer::lmpcBetween(
     double l = std::max(lo, bestS - (hi - lo) / n), h = std::min(hi, bestS + (hi - lo) / n);
     // The best sample at an end of the range that is no lower than its neighbour 1e-10
     // inside is the maximum to that precision (the search is unimodal in [l, h]): an
-    // ellipse's vertex where two of its arcs meet, without forty golden sections.
+    // ellipse's vertex where two of its arcs meet, without forty golden sections. It is
+    // that end exactly, so a front can land on it (a maximum 1e-11 short of a
+    // generator's end would reject every step onto the end as passing it).
     const double probe = 1e-10;
-    if (bestS == lo && h - l > 2.0 * probe && G.evaluate(g, lo + probe).curvature <= bestK)
-      h = lo + probe;
-    else if (bestS == hi && h - l > 2.0 * probe && G.evaluate(g, hi - probe).curvature <= bestK)
-      l = hi - probe;
+    if (bestS == lo && h - l > probe && G.evaluate(g, lo + probe).curvature <= bestK)
+      h = lo;
+    else if (bestS == hi && h - l > probe && G.evaluate(g, hi - probe).curvature <= bestK)
+      l = hi;
     const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
     double m1 = h - phi * (h - l), m2 = l + phi * (h - l);
     double k1 = 0.0, k2 = 0.0;
-    if (h - l > 2.0 * probe)
+    if (h - l > probe)
     {
       k1 = G.evaluate(g, m1).curvature;
       k2 = G.evaluate(g, m2).curvature;
     }
-    for (int it = 0; it < 60 && h - l > 2.0 * probe; ++it)
+    for (int it = 0; it < 60 && h - l > probe; ++it)
     {
       if (k1 < k2)
       {
