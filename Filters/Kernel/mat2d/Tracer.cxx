@@ -746,6 +746,10 @@ void Tracer::trace(const Pending& p)
   seg.samples.push_back(sampleOf(start.sample.x, y.r));
 
   const double tolerance = O.tolerance * L;
+  // A chord is accepted when the estimated deviation is below this fraction of the
+  // tolerance: the estimate is a parabola's through three points, and the curve's
+  // third-order part can put its true largest deviation off the middle and above it.
+  constexpr double Accept = 0.95;
   // The first step is the longest: a step too long is rejected on its measured chord error,
   // which also sizes the next try (down to a fifth), while growing to the right step from a
   // short one costs a sample (two disk tests) per doubling. Between two straight edges the
@@ -1128,7 +1132,7 @@ void Tracer::trace(const Pending& p)
       Vec2 x1 = ok ? Vec2(ga1.p + y1.r * ga1.n) : Vec2::Zero();
       // Next step from the measured chord error (∝ h²), kept within [×0.2, ×2].
       double resize = 0.5;
-      if (ok && !O.fixedStep && !joining)
+      if (ok && !O.fixedStep)
       {
         // Chord error: the MAT point halfway (in the held unknown) against the chord.
         BisectorState ym{ 0.5 * (y.sa + y1.sa), 0.5 * (y.sb + y1.sb), 0.5 * (y.r + y1.r) };
@@ -1139,12 +1143,15 @@ void Tracer::trace(const Pending& p)
           const Vec2 xm = gam.p + ym.r * gam.n;
           const double err = chordDeviation(x0, y.r, xm, ym.r, x1, y1.r);
           resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
-          if (err > tolerance)
+          // A step that joins boundary traced before is measured too (it lands where it
+          // must, but may be too long to get there in one chord: a segment between two
+          // branch points can be this one chord).
+          if (err > Accept * tolerance)
             ok = false;
           // A boundary feature whose MAT interrupts this pair's only between the two ends
           // of the step would go unseen by checks at the ends: check halfway too, and
           // take a shorter step when that disk is not empty.
-          else if (!emptyDisk(xm, ym.r, a.g, ym.sa, b.g, ym.sb))
+          else if (!joining && !emptyDisk(xm, ym.r, a.g, ym.sa, b.g, ym.sb))
           {
             ok = false;
             resize = 0.5;
@@ -1356,6 +1363,32 @@ void Tracer::trace(const Pending& p)
           !(loose > 2 * strict && polish(1e-6 * L, loose)))
           bisect(1e-13 * L);
         const Vec2 xb = branchPoint(yb, branchA, branchB);
+        // The chord to the branch point is a part of the step whose deviation was
+        // measured, not the step: measure it, and put samples in where it strays (a
+        // segment between two branch points can be this one chord).
+        std::vector<MedialSample> onTheWay;
+        if (!O.fixedStep && branchA == a.g && branchB == b.g)
+        {
+          auto refine = [&](auto&& self, const BisectorState& y0, const Vec2& p0,
+                          const BisectorState& y2, const Vec2& p2, int depth) -> void {
+            BisectorState ym{ 0.5 * (y0.sa + y2.sa), 0.5 * (y0.sb + y2.sb), 0.5 * (y0.r + y2.r) };
+            GeneratorPoint gam, gbm;
+            if (depth >= 8 || !B.correct(ym, fixed, solveTol, &gam, &gbm))
+              return;
+            const Vec2 xm = gam.p + ym.r * gam.n;
+            if (chordDeviation(p0, y0.r, xm, ym.r, p2, y2.r) <= Accept * tolerance)
+              return;
+            self(self, y0, p0, ym, xm, depth + 1);
+            MedialSample m;
+            m.x = xm;
+            m.radius = ym.r;
+            m.foot[0] = { a.g, ym.sa, gam.p, gam.n, false };
+            m.foot[1] = { b.g, ym.sb, gbm.p, gbm.n, false };
+            onTheWay.push_back(m);
+            self(self, ym, xm, y2, p2, depth + 1);
+          };
+          refine(refine, y, x0, yb, xb, 0);
+        }
         // Fronts move on to the generators of the polished footpoints (or back, by
         // rounding, to the one just left).
         if (branchA != a.g)
@@ -1379,6 +1412,7 @@ void Tracer::trace(const Pending& p)
         a.interval = Cover.cover(a.g, y.sa, yb.sa, a.interval);
         b.interval = Cover.cover(b.g, yb.sb, y.sb, b.interval);
         y = yb;
+        seg.samples.insert(seg.samples.end(), onTheWay.begin(), onTheWay.end());
         seg.samples.push_back(sampleOf(xb, yb.r));
         // The node is exact to rounding: footpoints farther than that belong to another
         // branch point of a cluster (reached along one of this node's own segments).
