@@ -43,7 +43,7 @@ void MedialGraph::mergeJoints()
       n.segments[0] == n.segments[1])
       continue;
     const int s1 = n.segments[0], s2 = n.segments[1];
-    MedialSegment a = segments[s1], b = segments[s2];
+    MedialSegment a = std::move(segments[s1]), b = std::move(segments[s2]); // s2 dies
     if (a.endNode != static_cast<int>(j))
       reverse(a);
     if (b.startNode != static_cast<int>(j))

@@ -58,8 +58,10 @@ struct Pending
 class Coverage
 {
 public:
-  explicit Coverage(int generators)
+  /// `undoable`: keep the log undo() needs (the fixed-step mode's backtracking).
+  Coverage(int generators, bool undoable)
     : Intervals(generators)
+    , Undoable(undoable)
   {
   }
 
@@ -72,13 +74,15 @@ public:
     auto& list = Intervals[g];
     if (id >= 0 && id < static_cast<int>(list.size()))
     {
-      Log.push_back({ g, id, list[id].first, list[id].second, false });
+      if (Undoable)
+        Log.push_back({ g, id, list[id].first, list[id].second, false });
       list[id].first = std::min(list[id].first, lo);
       list[id].second = std::max(list[id].second, hi);
       return id;
     }
     list.emplace_back(lo, hi);
-    Log.push_back({ g, static_cast<int>(list.size()) - 1, lo, hi, true });
+    if (Undoable)
+      Log.push_back({ g, static_cast<int>(list.size()) - 1, lo, hi, true });
     return static_cast<int>(list.size()) - 1;
   }
 
@@ -90,7 +94,8 @@ public:
     auto& list = Intervals[g];
     if (id < 0 || id >= static_cast<int>(list.size()))
       return;
-    Log.push_back({ g, id, list[id].first, list[id].second, false });
+    if (Undoable)
+      Log.push_back({ g, id, list[id].first, list[id].second, false });
     if (dir > 0)
       list[id].second = std::max(list[id].first, std::min(list[id].second, s));
     else
@@ -205,6 +210,7 @@ private:
     bool added;
   };
   std::vector<std::vector<std::pair<double, double>>> Intervals;
+  bool Undoable = false;
   std::vector<Entry> Log;
 };
 
@@ -216,7 +222,7 @@ public:
     , O(o)
     , L(g.size2D())
     , InputRounding(64.0 * g.boundary().userFrame().inputRounding())
-    , Cover(g.size())
+    , Cover(g.size(), o.fixedStep)
   {
   }
 
