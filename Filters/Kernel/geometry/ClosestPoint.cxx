@@ -73,6 +73,10 @@ int stationarityOnStack(const BezierCurve& curve, const Vec3& q, double* g, Stat
   int n = 0;
   for (int k = 0; k < 3; ++k)
   {
+    // A coordinate the curve and the query share everywhere (z of every 2D query) adds
+    // exact zeros: skip its three products.
+    if (k > 0 && std::all_of(d[k], d[k] + p + 1, [](double v) { return v == 0.0; }))
+      continue;
     for (int i = 0; i < p; ++i)
       dk[i] = p * (d[k][i + 1] - d[k][i]);
     int m;

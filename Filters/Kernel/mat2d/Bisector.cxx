@@ -62,7 +62,7 @@ bool Bisector::correct(BisectorState& y, int fixed, double tolerance, GeneratorP
   {
     const GeneratorPoint a = G->evaluate(A, y.sa), b = G->evaluate(B, y.sb);
     const Vec2 e = a.p + y.r * a.n - b.p - y.r * b.n;
-    if (e.norm() <= tolerance)
+    if (e.squaredNorm() <= tolerance * tolerance)
     {
       if (atA)
         *atA = a;
@@ -72,18 +72,16 @@ bool Bisector::correct(BisectorState& y, int fixed, double tolerance, GeneratorP
     }
     const Vec2 cols[3] = { a.dp + y.r * a.dn, -(b.dp + y.r * b.dn), a.n - b.n };
     const int i = (fixed == 0) ? 1 : 0, j = (fixed == 2) ? 1 : 2;
-    Eigen::Matrix2d J;
-    J << cols[i].x(), cols[j].x(), cols[i].y(), cols[j].y();
-    const double det = J.determinant();
+    // The 2×2 system [cols[i] cols[j]]·d = e by Cramer's rule.
+    const Vec2 &u = cols[i], &v = cols[j];
+    const double det = u.x() * v.y() - v.x() * u.y();
     if (!(std::abs(det) > 1e-300))
     {
       return false;
     }
-    const Eigen::Vector2d d = J.inverse() * Eigen::Vector2d(e.x(), e.y());
-    double* v[3] = { &y.sa, &y.sb, &y.r };
-    // Damped update: never leave the parameter range by more than the step asks.
-    *v[i] -= d(0);
-    *v[j] -= d(1);
+    double* unknown[3] = { &y.sa, &y.sb, &y.r };
+    *unknown[i] -= (e.x() * v.y() - v.x() * e.y()) / det;
+    *unknown[j] -= (u.x() * e.y() - e.x() * u.y()) / det;
     if (!(y.sa > -0.5 && y.sa < 1.5 && y.sb > -0.5 && y.sb < 1.5 && y.r > -1e-9) ||
       !std::isfinite(y.r))
     {

@@ -14,6 +14,7 @@ BezierCurve::BezierCurve(const Vec3List& points, const std::vector<double>& weig
   {
     Points.push_back(homogeneous(points[i], weights.empty() ? 1.0 : weights[i]));
   }
+  Box = controlBox(Points);
 }
 
 Vec3 BezierCurve::evaluate(double t) const
@@ -153,10 +154,10 @@ BezierCurve BezierCurve::reversed() const
   return BezierCurve(Vec4List(Points.rbegin(), Points.rend()));
 }
 
-Box3 BezierCurve::boundingBox() const
+Box3 BezierCurve::controlBox(const Vec4List& points)
 {
   Box3 box;
-  for (const Vec4& h : Points)
+  for (const Vec4& h : points)
   {
     box.extend(euclidean(h));
   }

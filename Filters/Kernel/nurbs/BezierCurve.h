@@ -21,6 +21,7 @@ public:
   BezierCurve() = default;
   explicit BezierCurve(Vec4List homogeneousPoints)
     : Points(std::move(homogeneousPoints))
+    , Box(controlBox(Points))
   {
   }
   BezierCurve(const Vec3List& points, const std::vector<double>& weights);
@@ -49,13 +50,17 @@ public:
   /// a patch ruled between it and a polynomial curve has straight, linearly parameterised
   /// end rulings.
   BezierCurve inStandardForm() const;
-  /// Bounding box of the Euclidean control points (contains the curve).
-  Box3 boundingBox() const;
+  /// Bounding box of the Euclidean control points (contains the curve); kept, as every
+  /// emptiness test and footpoint query starts with it.
+  const Box3& boundingBox() const { return Box; }
   /// The curve as a one-span NurbsCurve on [0,1].
   NurbsCurve toNurbs() const;
 
 private:
+  static Box3 controlBox(const Vec4List& points);
+
   Vec4List Points;
+  Box3 Box;
 };
 
 } // namespace exactmat
