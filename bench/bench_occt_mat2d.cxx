@@ -320,9 +320,9 @@ int main()
     const double native = occtMs(occtFace(b, true), repeats, arcs, why);
     const double bezier = occtMs(occtFace(b, false), repeats, bezierArcs, bezierWhy);
     char nativeText[64], ratio[32], bezierText[64];
-    std::snprintf(nativeText, sizeof nativeText, "%.2f", native);
+    std::snprintf(nativeText, sizeof nativeText, "%.3f", native);
     std::snprintf(ratio, sizeof ratio, "%.2f", native / ours);
-    std::snprintf(bezierText, sizeof bezierText, "%.2f", bezier);
+    std::snprintf(bezierText, sizeof bezierText, "%.3f", bezier);
     std::printf("| %s | %.3f | %.1e | %s | %s | %s | %s |\n", name.c_str(), ours, error,
       native >= 0 ? nativeText : why.c_str(), native >= 0 ? std::to_string(arcs).c_str() : "-",
       native >= 0 ? ratio : "-", bezier >= 0 ? bezierText : bezierWhy.c_str());
