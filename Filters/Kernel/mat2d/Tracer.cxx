@@ -838,8 +838,27 @@ void Tracer::trace(const Pending& p)
   // where it is. Distinct branch points of a cluster may lie 1e-8 apart: only points
   // closer than the verification's tolerance are the same node.
   auto endAtBranchPoint = [&](const Vec2& xb, double r) {
-    const std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, r * (1.0 + 1e-10) + 1e-11 * L);
+    std::vector<BoundaryLocation> fps = G.footpointsWithin(xb, r * (1.0 + 1e-10) + 1e-11 * L);
+    // The point is on this pair's bisector: it touches both fronts' generators where the
+    // fronts are, whether or not the search, to its tight tolerance, says so. Far from the
+    // origin a foot beside a curvature peak at a smooth junction can fall out (the branch
+    // point then looked like a plain point, and the wedge towards the peak was never
+    // traced: a random blob moved 9e5 × its size).
+    for (const Front& f : { a, b })
+    {
+      const BoundaryLocation at = location(f.g, f.s);
+      const bool present = std::any_of(fps.begin(), fps.end(),
+        [&](const BoundaryLocation& o) { return (o.point - at.point).norm() <= 1e-9 * L; });
+      if (!present && std::abs((at.point - xb).norm() - r) <= 1e-9 * L)
+        fps.push_back(at);
+    }
     const int id = findNode(xb, NodeMerge * L);
+#ifdef EXACTMAT_TRACE_DEBUG
+    std::fprintf(stderr, "  branch point (%.12g %.12g) r %.12g, existing node %d, feet:", xb.x(), xb.y(), r, id);
+    for (const BoundaryLocation& f : fps)
+      std::fprintf(stderr, " g%d@%.12g", f.g, f.s);
+    std::fprintf(stderr, "\n");
+#endif
     if (id < 0)
     {
       finish(addNode(xb, r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps));
