@@ -67,13 +67,13 @@ void MedialGraph::mergeJoints()
     if (!deadNode[i])
     {
       nodeIndex[i] = static_cast<int>(keptNodes.size());
-      keptNodes.push_back(nodes[i]);
+      keptNodes.push_back(std::move(nodes[i]));
     }
   for (size_t i = 0; i < segments.size(); ++i)
     if (!deadSegment[i])
     {
       segmentIndex[i] = static_cast<int>(keptSegments.size());
-      keptSegments.push_back(segments[i]);
+      keptSegments.push_back(std::move(segments[i]));
     }
   for (MedialSegment& s : keptSegments)
   {
