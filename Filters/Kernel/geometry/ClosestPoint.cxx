@@ -380,23 +380,6 @@ std::vector<CurveFootpoint> curveFootpoints(
 
 namespace
 {
-// The two halves of Σ h_k B_{k,n} at t (de Casteljau), into left and right.
-void splitBernstein(const double* h, int n, double t, double* left, double* right)
-{
-  double b[2 * MaxDegree + 1];
-  std::copy(h, h + n + 1, b);
-  const double s = 1.0 - t;
-  left[0] = b[0];
-  right[n] = b[n];
-  for (int k = 1; k <= n; ++k)
-  {
-    for (int i = 0; i <= n - k; ++i)
-      b[i] = s * b[i] + t * b[i + 1];
-    left[k] = b[0];
-    right[n - k] = b[n - k];
-  }
-}
-
 // The minimum of a quadratic in Bernstein form on [0, 1], in closed form: a straight edge's
 // squared distance. Subdividing a nearly tangent one costs up to 40 levels, and a regular
 // n-gon's centre meets n of them in every disk.

@@ -126,6 +126,22 @@ BernsteinPoly BernsteinPoly::elevatedTo(int m) const
   return e;
 }
 
+void splitBernstein(const double* c, int n, double t, double* left, double* right)
+{
+  double b[96];
+  std::copy(c, c + n + 1, b);
+  const double s = 1.0 - t;
+  left[0] = b[0];
+  right[n] = b[n];
+  for (int k = 1; k <= n; ++k)
+  {
+    for (int i = 0; i <= n - k; ++i)
+      b[i] = s * b[i] + t * b[i + 1];
+    left[k] = b[0];
+    right[n - k] = b[n - k];
+  }
+}
+
 void BernsteinPoly::split(double t, BernsteinPoly& left, BernsteinPoly& right) const
 {
   // The innermost step of every subdivision search (2D footpoints split each row and
@@ -138,24 +154,9 @@ void BernsteinPoly::split(double t, BernsteinPoly& left, BernsteinPoly& right) c
     right.c.assign(0, 0.0);
     return;
   }
-  double b[96];
-  const double* in = c.begin();
-  for (int i = 0; i <= n; ++i)
-    b[i] = in[i];
   left.c.resizeForOverwrite(n + 1);
   right.c.resizeForOverwrite(n + 1);
-  double* l = left.c.data();
-  double* r = right.c.data();
-  const double s = 1.0 - t;
-  l[0] = b[0];
-  r[n] = b[n];
-  for (int k = 1; k <= n; ++k)
-  {
-    for (int i = 0; i <= n - k; ++i)
-      b[i] = s * b[i] + t * b[i + 1];
-    l[k] = b[0];
-    r[n - k] = b[n - k];
-  }
+  splitBernstein(c.begin(), n, t, left.c.data(), right.c.data());
 }
 
 BernsteinPoly BernsteinPoly::restrictedTo(double a, double b) const

@@ -49,6 +49,11 @@ inline double binomial(int n, int k)
 /// `out` must hold 3·(p+1) doubles: values, then first, then second derivatives.
 void bernsteinWithDerivatives(int p, double t, double* out);
 
+/// The two halves of Σ c_k B_{k,n}(t) at t (de Casteljau) into left and right (n + 1
+/// coefficients each; n ≤ 95): the arrays' own form of BernsteinPoly::split, for tests
+/// that subdivide on the stack.
+void splitBernstein(const double* c, int n, double t, double* left, double* right);
+
 /// A univariate polynomial Σ c_i B_{i,n}(t), n = c.size() − 1 (n ≤ 95).
 struct BernsteinPoly
 {
