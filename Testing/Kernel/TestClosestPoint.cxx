@@ -194,6 +194,51 @@ BezierPatch wavyPatch()
 }
 } // namespace
 
+// The emptiness test of a disk tangent to a curve, told the touch (a tracing step's disk)
+// or not, against the sampled distance: disks that stay outside (radius below the
+// curvature radius, and the curve not coming back) and disks the curve enters beside the
+// touch (radius above it) or far from it (the cubic's other lobe).
+TEST(ClosestPoint, TangentDiskEmptinessMatchesBruteForce)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> at(0.02, 0.98), radius(0.05, 3.0);
+  // A quarter ellipse 2 × 1 (rational quadratic), the inflected cubic, a rational quartic.
+  const BezierCurve quarterEllipse(Vec3List{ Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0) },
+    { 1.0, std::sqrt(0.5), 1.0 });
+  int inside = 0, outside = 0;
+  for (const BezierCurve& c : { quarterEllipse, inflectionCubic(), rationalQuartic() })
+  {
+    for (int trial = 0; trial < 200; ++trial)
+    {
+      const double tau = at(rng), r = radius(rng);
+      const CurveDerivatives d = c.derivatives(tau);
+      if (d.d2.cross(d.d1).norm() <= 1e-6 * d.d1.squaredNorm())
+        continue; // an inflection: no osculating plane
+      // The disk on either side of the curve, in the curve's osculating plane.
+      const Vec3 side = d.d1.cross(d.d2.cross(d.d1)).normalized() * (trial % 2 ? 1.0 : -1.0);
+      const Vec3 x = d.point + r * side;
+      const double test = r * (1.0 - 1e-9); // the tracer's disks keep a margin of this order
+      const double nearest = bruteForceCurveMinima(c, x).front();
+      if (std::abs(nearest - test) <= 1e-11 * r)
+        continue; // too close to call
+      const bool expected = nearest < test;
+      (expected ? inside : outside)++;
+      EXPECT_EQ(curveComesWithin(c, x, test, tau), expected) << "tau " << tau << " r " << r;
+      EXPECT_EQ(curveComesWithin(c, x, test), expected) << "tau " << tau << " r " << r;
+    }
+  }
+  // Both kinds were drawn (the test can fail either way).
+  EXPECT_GT(inside, 50);
+  EXPECT_GT(outside, 50);
+  // The ellipse's vertex (2, 0): radius of curvature 1/2. A disk of radius 0.45 tangent
+  // there stays outside, one of 0.55 is entered beside the touch.
+  const double tau0 = 1e-3;
+  const CurveDerivatives v = quarterEllipse.derivatives(tau0);
+  const Vec3 inward = v.d1.cross(v.d2.cross(v.d1)).normalized(); // towards the centre
+  EXPECT_FALSE(curveComesWithin(quarterEllipse, v.point + 0.45 * inward, 0.45 * (1 - 1e-9), tau0));
+  EXPECT_TRUE(curveComesWithin(quarterEllipse, v.point + 0.55 * inward, 0.55 * (1 - 1e-9), tau0));
+}
+
 TEST(ClosestPoint, PatchGlobalMinimumMatchesBruteForce)
 {
   const BezierPatch p = wavyPatch();

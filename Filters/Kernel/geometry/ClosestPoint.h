@@ -60,9 +60,10 @@ CurveFootpoint closestPoint(const BezierCurve& curve, const Vec3& query);
 /// where the curve is within rounding of the circle: that counts as not closer.
 bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius);
 /// The same test, told where the disk touches the curve (parameter `touch`, a footpoint of
-/// the query): the squared distance is split there, so the proof that it stays above
-/// radius² near a tangency is not a 40-level subdivision around a double root. The answer
-/// is the same; only the work differs.
+/// the query): the squared distance, which has a (near) double root there, is first
+/// deflated by it (outside when the quotient's least value proves it, up to degree 8), else
+/// split there, so the proof that it stays above radius² near a tangency is not a 40-level
+/// subdivision around a double root. The answer is the same; only the work differs.
 bool curveComesWithin(const BezierCurve& curve, const Vec3& query, double radius, double touch);
 
 /// Every local minimum of |S(u,v) − P| on [0,1]² with distance ≤ maxDistance, interior
