@@ -134,25 +134,6 @@ double polishCurve(const BezierCurve& c, const Vec3& q, double t, double lo, dou
   return t;
 }
 
-// g(t) and g'(t) by one de Casteljau pass: the last level's two points give both.
-double valueAndSlope(const BernsteinPoly& g, double t, double& slope)
-{
-  const int n = g.degree();
-  if (n < 1)
-  {
-    slope = 0.0;
-    return n < 0 ? 0.0 : g.c[0];
-  }
-  double b[96];
-  std::copy(g.c.begin(), g.c.end(), b);
-  const double s = 1.0 - t;
-  for (int r = 1; r < n; ++r)
-    for (int i = 0; i <= n - r; ++i)
-      b[i] = s * b[i] + t * b[i + 1];
-  slope = n * (b[1] - b[0]);
-  return s * b[0] + t * b[1];
-}
-
 // Finds the sign change of g on [a,b] (g(a) < 0 < g(b) or the reverse) to ~1e-13 of the
 // parameter: Newton steps kept inside the shrinking bracket, halving where a step would
 // leave it or not halve the step before (a root of odd multiplicity > 1 converges only
@@ -166,7 +147,7 @@ double bracketRoot(const BernsteinPoly& g, double a, double b, double ga, double
   for (int it = 0; it < 100 && b - a > 1e-12; ++it)
   {
     double slope = 0.0;
-    const double gt = valueAndSlope(g, t, slope);
+    const double gt = g.valueAndSlope(t, slope);
     if (gt == 0.0)
       return t;
     if ((gt < 0.0) == (ga < 0.0))

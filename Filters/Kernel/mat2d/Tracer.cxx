@@ -1110,6 +1110,24 @@ void Tracer::trace(const Pending& p)
         (fixed == 0 ? y1.sa : y1.sb) = fixedValue;
       }
       const double solveTol = 1e-13 * L;
+      // The MAT point halfway (in the held unknown) between two states of this pair, and
+      // how far the chord between them strays from the curve (the step control's measure).
+      struct Halfway
+      {
+        BisectorState y;
+        GeneratorPoint ga, gb;
+        Vec2 x;
+        double deviation;
+      };
+      auto halfway = [&](const BisectorState& y0, const Vec2& p0, const BisectorState& y2,
+                       const Vec2& p2, Halfway& m) {
+        m.y = BisectorState{ 0.5 * (y0.sa + y2.sa), 0.5 * (y0.sb + y2.sb), 0.5 * (y0.r + y2.r) };
+        if (!B.correct(m.y, fixed, solveTol, &m.ga, &m.gb))
+          return false;
+        m.x = m.ga.p + m.y.r * m.ga.n;
+        m.deviation = chordDeviation(p0, y0.r, m.x, m.y.r, p2, y2.r);
+        return true;
+      };
       GeneratorPoint ga1, gb1; // both generators at y1, from the corrector's last check
       bool ok = B.correct(y1, fixed, solveTol, &ga1, &gb1);
       // The corrector may carry a front past its generator's end (onto the extrapolated
@@ -1159,14 +1177,10 @@ void Tracer::trace(const Pending& p)
       double resize = 0.5;
       if (ok && !O.fixedStep)
       {
-        // Chord error: the MAT point halfway (in the held unknown) against the chord.
-        BisectorState ym{ 0.5 * (y.sa + y1.sa), 0.5 * (y.sb + y1.sb), 0.5 * (y.r + y1.r) };
-        const int mid = fixed;
-        GeneratorPoint gam;
-        if (B.correct(ym, mid, solveTol, &gam))
+        Halfway m;
+        if (halfway(y, x0, y1, x1, m))
         {
-          const Vec2 xm = gam.p + ym.r * gam.n;
-          const double err = chordDeviation(x0, y.r, xm, ym.r, x1, y1.r);
+          const double err = m.deviation;
           resize = err > 0.0 ? std::min(2.0, std::max(0.2, 0.9 * std::sqrt(tolerance / err))) : 2.0;
           // A step that joins boundary traced before is measured too (it lands where it
           // must, but may be too long to get there in one chord: a segment between two
@@ -1176,7 +1190,7 @@ void Tracer::trace(const Pending& p)
           // A boundary feature whose MAT interrupts this pair's only between the two ends
           // of the step would go unseen by checks at the ends: check halfway too, and
           // take a shorter step when that disk is not empty.
-          else if (!joining && !emptyDisk(xm, ym.r, a.g, ym.sa, b.g, ym.sb))
+          else if (!joining && !emptyDisk(m.x, m.y.r, a.g, m.y.sa, b.g, m.y.sb))
           {
             ok = false;
             resize = 0.5;
@@ -1396,21 +1410,17 @@ void Tracer::trace(const Pending& p)
         {
           auto refine = [&](auto&& self, const BisectorState& y0, const Vec2& p0,
                           const BisectorState& y2, const Vec2& p2, int depth) -> void {
-            BisectorState ym{ 0.5 * (y0.sa + y2.sa), 0.5 * (y0.sb + y2.sb), 0.5 * (y0.r + y2.r) };
-            GeneratorPoint gam, gbm;
-            if (depth >= 8 || !B.correct(ym, fixed, solveTol, &gam, &gbm))
+            Halfway m;
+            if (depth >= 8 || !halfway(y0, p0, y2, p2, m) || m.deviation <= Accept * tolerance)
               return;
-            const Vec2 xm = gam.p + ym.r * gam.n;
-            if (chordDeviation(p0, y0.r, xm, ym.r, p2, y2.r) <= Accept * tolerance)
-              return;
-            self(self, y0, p0, ym, xm, depth + 1);
-            MedialSample m;
-            m.x = xm;
-            m.radius = ym.r;
-            m.foot[0] = { a.g, ym.sa, gam.p, gam.n, false };
-            m.foot[1] = { b.g, ym.sb, gbm.p, gbm.n, false };
-            onTheWay.push_back(m);
-            self(self, ym, xm, y2, p2, depth + 1);
+            self(self, y0, p0, m.y, m.x, depth + 1);
+            MedialSample sample;
+            sample.x = m.x;
+            sample.radius = m.y.r;
+            sample.foot[0] = { a.g, m.y.sa, m.ga.p, m.ga.n, false };
+            sample.foot[1] = { b.g, m.y.sb, m.gb.p, m.gb.n, false };
+            onTheWay.push_back(sample);
+            self(self, m.y, m.x, y2, p2, depth + 1);
           };
           refine(refine, y, x0, yb, xb, 0);
         }
@@ -1553,6 +1563,12 @@ bool Tracer::startAt(int g, double s)
   auto emptyAt = [&](double rr) {
     return !G.anyCloserThan(p.p + rr * p.n, rr * (1.0 - 1e-12) - 1e-13 * L);
   };
+  // The radius of the disk tangent at p through q (∞ when q is p, or behind p's tangent).
+  auto tangentRadius = [&](const Vec2& q) {
+    const Vec2 d = q - p.p;
+    const double denominator = 2.0 * d.dot(p.n);
+    return d.norm() > 1e-9 * L && denominator > 0.0 ? d.squaredNorm() / denominator : INFINITY;
+  };
   double r = L;
   Vec2 x = p.p + r * p.n;
   bool empty = false;
@@ -1565,10 +1581,7 @@ bool Tracer::startAt(int g, double s)
       // The first disk, of the domain's size, needs only the nearest boundary point.
       Vec2 q;
       G.distance(x, &q);
-      const Vec2 d = q - p.p;
-      const double denominator = 2.0 * d.dot(p.n);
-      if (d.norm() > 1e-9 * L && denominator > 0.0 && d.squaredNorm() / denominator < next)
-        next = d.squaredNorm() / denominator;
+      next = std::min(next, tangentRadius(q));
 #ifdef EXACTMAT_TRACE_DEBUG
       std::fprintf(stderr, "  shrinking ball round 0: r %.15g, nearest (%.15g %.15g), next %.15g\n", r, q.x(), q.y(), next);
 #endif
@@ -1582,11 +1595,10 @@ bool Tracer::startAt(int g, double s)
     const std::vector<BoundaryLocation> feet = G.footpointsWithin(x, reach * (1.0 + 1e-12) + 1e-12 * L);
     for (const BoundaryLocation& f : feet)
     {
-      const Vec2 d = f.point - p.p;
-      const double denominator = 2.0 * d.dot(p.n);
-      if (d.norm() > 1e-9 * L && denominator > 0.0 && d.squaredNorm() / denominator < next)
+      const double through = tangentRadius(f.point);
+      if (through < next)
       {
-        next = d.squaredNorm() / denominator;
+        next = through;
         nearest = &f;
       }
     }

@@ -68,23 +68,28 @@ void bernsteinWithDerivatives(int p, double t, double* out)
 
 double BernsteinPoly::operator()(double t) const
 {
-  // de Casteljau in a stack buffer: this is the innermost loop of every footpoint query.
+  double slope;
+  return valueAndSlope(t, slope);
+}
+
+double BernsteinPoly::valueAndSlope(double t, double& slope) const
+{
+  // de Casteljau in a stack buffer (the innermost loop of every footpoint query) down to
+  // the last two points, which give the derivative and, blended, the value.
   const int n = degree();
-  if (n < 0)
+  if (n < 1)
   {
-    return 0.0;
+    slope = 0.0;
+    return n < 0 ? 0.0 : c[0];
   }
   double b[96];
   std::copy(c.begin(), c.end(), b);
   const double s = 1.0 - t;
-  for (int r = 1; r <= n; ++r)
-  {
+  for (int r = 1; r < n; ++r)
     for (int i = 0; i <= n - r; ++i)
-    {
       b[i] = s * b[i] + t * b[i + 1];
-    }
-  }
-  return b[0];
+  slope = n * (b[1] - b[0]);
+  return s * b[0] + t * b[1];
 }
 
 BernsteinPoly BernsteinPoly::derivative() const

@@ -61,6 +61,8 @@ struct BernsteinPoly
 
   int degree() const { return static_cast<int>(c.size()) - 1; }
   double operator()(double t) const;
+  /// The value at t and, in `slope`, the derivative (one de Casteljau pass).
+  double valueAndSlope(double t, double& slope) const;
   BernsteinPoly derivative() const;
   BernsteinPoly elevatedTo(int n) const;
   /// The same polynomial re-parameterised over [a,b] ⊂ [0,1] (de Casteljau twice).
