@@ -244,11 +244,25 @@ private:
   {
     // The cells around x that a disk of radius `reach` meets (3 × 3 for reach ≤ a cell).
     const double cell = NodeCell * L;
-    const long long k = std::max(1LL, static_cast<long long>(std::ceil(reach / cell)));
-    const long long ci = static_cast<long long>(std::floor(x.x() / cell));
-    const long long cj = static_cast<long long>(std::floor(x.y() / cell));
     int best = -1;
     double bestDistance = reach;
+    const double span = std::ceil(reach / cell);
+    if (!(span <= 64.0))
+    {
+      // A reach of many cells (or none a number can say): every node, once.
+      for (int n = 0; n < static_cast<int>(Graph.nodes.size()); ++n)
+      {
+        const double d = (Graph.nodes[n].sample.x - x).norm();
+        if (d <= bestDistance && accept(n))
+        {
+          bestDistance = d;
+          best = n;
+        }
+      }
+      return best;
+    }
+    const long long k = std::max(1LL, static_cast<long long>(span));
+    const long long ci = cellIndex(x.x()), cj = cellIndex(x.y());
     for (long long i = ci - k; i <= ci + k; ++i)
     {
       for (long long j = cj - k; j <= cj + k; ++j)
@@ -345,6 +359,14 @@ private:
   /// this are one node of degree k (the issue allows either form).
   static constexpr double ClusterReach = 1e-7;
   long long cellKey(long long i, long long j) const { return i * 73856093LL ^ j * 19349663LL; }
+  /// The node grid's cell of coordinate v. Points beyond 1e9 cells (a trace gone wild on
+  /// hostile input, or NaN) share the border cells: the distances decide, and neither the
+  /// cast nor the key overflows.
+  long long cellIndex(double v) const
+  {
+    const double c = std::floor(v / (NodeCell * L));
+    return c >= -1e9 && c <= 1e9 ? static_cast<long long>(c) : (c > 0.0 ? 1000000000LL : -1000000000LL);
+  }
   int SegmentsSinceProgress = 0;
   std::deque<Pending> Queue;
   double TotalMeasure = 1.0;
@@ -414,10 +436,7 @@ int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<B
   n.footpoints = std::move(fps);
   Graph.nodes.push_back(std::move(n));
   const int id = static_cast<int>(Graph.nodes.size()) - 1;
-  const double cell = NodeCell * L;
-  NodeGrid[cellKey(static_cast<long long>(std::floor(x.x() / cell)),
-             static_cast<long long>(std::floor(x.y() / cell)))]
-    .push_back(id);
+  NodeGrid[cellKey(cellIndex(x.x()), cellIndex(x.y()))].push_back(id);
   return id;
 }
 
@@ -761,7 +780,8 @@ void Tracer::trace(const Pending& p)
   // short one costs a sample (two disk tests) per doubling. Between two straight edges the
   // MAT is a straight line and its radius linear: no step has a chord error at all.
   double h = O.fixedStep ? O.step * L : 0.05 * L;
-  const int checkEvery = O.fixedStep ? std::max(1, static_cast<int>(std::lround(O.branchCheckStep / O.step))) : 1;
+  const double stepsPerCheck = std::round(O.branchCheckStep / O.step);
+  const int checkEvery = O.fixedStep && stepsPerCheck > 1.0 ? static_cast<int>(std::min(stepsPerCheck, 1e6)) : 1;
   int sinceCheck = 0;
   bool checkEveryStep = !O.fixedStep;
   // Checkpoint for the fixed-step mode's backtracking to the last checked point.
