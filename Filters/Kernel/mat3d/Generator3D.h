@@ -93,6 +93,8 @@ public:
 
   /// Reflex corners: the edges (Boundary3D indices) bounding the normal cone.
   const std::vector<int>& cornerEdges() const { return CornerEdges; }
+  /// Reflex corners: the unit directions of those edges leaving the vertex (same order).
+  const Vec3List& cornerTangents() const { return CornerTangents; }
   /// Reflex corners: whether the normal cone has an interior (at least three reflex edges,
   /// its axis strictly inside); two collinear reflex edges meeting make none.
   bool cornerHasCone() const;

@@ -85,6 +85,8 @@ private:
   int contactCount(const MedialBall3D& ball) const;
   std::vector<std::pair<Vec3, std::vector<int>>> contactGenerators(const MedialBall3D& ball) const;
   std::set<std::pair<int, int>> sheetPairs(const MAT3DSeam& seam, size_t b) const;
+  int sheetGenerator(const MedialBall3D& ball, const Vec3& point, int g, const Vec3& w) const;
+  int cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const;
   int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
   // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
@@ -102,6 +104,16 @@ private:
   std::string describe(const MedialBall3D& ball) const;
   void reportProgress();
   void collectSheets();
+  /// A seam leaving or reaching a node: its direction away from the node and the points
+  /// where its triplet touches at the node (empty for a degenerate seam, which any triplet
+  /// leaving in its direction belongs to).
+  struct Departure
+  {
+    Vec3 direction = Vec3::Zero();
+    Vec3List contacts;
+  };
+  void depart(int node, const Vec3& direction, const MedialBall3D& triplet, int touchpoints);
+  bool departed(int node, const Vec3& direction, const MedialBall3D& triplet, int touchpoints) const;
 
   const Boundary3D& B;
   MAT3DOptions Options;
@@ -115,6 +127,7 @@ private:
 
   MAT3D Result;
   std::set<std::pair<int, Triplet>> Traced;
+  std::map<int, std::vector<Departure>> Departures; // by node
   std::vector<bool> Reached; // faces some seam has touched (for progress)
   int ReachedCount = 0;
   std::vector<int> Queue;
@@ -713,6 +726,36 @@ void Tracer::polishJunction(MedialBall3D& j) const
       fail("3D MAT: the junction near ", describe(j), " could not be polished");
     j = polished;
   }
+  // Every entity touching the polished ball is a generator of the seams leaving it, also
+  // where another touches at the same point and so added no equation above: a wall touched
+  // at its foot on a reflex edge and that edge (the ball's normal at the end of the edge's
+  // arc) start different seams (up the wall; along the edge's sheet below it), and so do the
+  // collinear pieces of an edge meeting there. Appended after the solve (a repeated point
+  // is a repeated equation); the seams leaving solve their own triplets.
+  for (int f : Tree.candidatesWithin(j.x, j.r + 1e-6 * Size))
+  {
+    const Vec3 foot = Generators[f].nearestPoint(j.x);
+    const double footDistance = (foot - j.x).norm();
+    if (footDistance > j.r + 1e-10 * Size || footDistance <= Degenerate)
+      continue;
+    const Vec3 normal = Generators[f].evaluate(Generators[f].parameterOf(foot)).normal;
+    std::vector<int> touching;
+    if ((j.x - foot).cross(normal).norm() <= 1e-8 * footDistance)
+      touching.push_back(f);
+    for (size_t g = B.faces().size(); g < Generators.size(); ++g)
+    {
+      const std::vector<int>& faces = Generators[g].faces();
+      if (std::find(faces.begin(), faces.end(), f) != faces.end() && Generators[g].distance(foot) <= 1e-9 * Size &&
+        Generators[g].exitSide(Generators[g].touchParameter(foot, j.x), 1e-9 * Size) < 0)
+        touching.push_back(static_cast<int>(g));
+    }
+    for (int g : touching)
+      if (std::find(j.generators.begin(), j.generators.end(), g) == j.generators.end())
+      {
+        j.generators.push_back(g);
+        j.q.push_back(g == f ? Generators[g].parameterOf(foot) : Generators[g].touchParameter(foot, j.x));
+      }
+  }
 }
 
 void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints)
@@ -863,7 +906,24 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       }
       const int face = at.generators[leaving];
       const MedialBall3D crossing = at;
-      crossOver(at, leaving, side);
+      // Crossings that make no progress meet at a point where several entities end (a
+      // staircase's vertex where a step's reflex edge ends at a taller column's corner): the
+      // neighbour across the side crossed may be no nearer than the entity left, and the
+      // touch goes back and forth. There the touch goes on with the entity nearest the ball
+      // moved on along the seam (the rule the sheets use across a seam).
+      const int nearest = stalled >= 1 ? sheetGenerator(at, Generators[face].evaluate(at.q[leaving]).point, face,
+                                           t.segment<3>(6))
+                                       : face;
+      if (nearest != face &&
+        std::find(at.generators.begin(), at.generators.end(), nearest) == at.generators.end())
+      {
+        const Generator3D& to = Generators[nearest];
+        const Vec3 foot = to.nearestPoint(at.x);
+        at.generators[leaving] = nearest;
+        at.q[leaving] = to.kind() == GeneratorKind3D::Face ? to.parameterOf(foot) : to.touchParameter(foot, at.x);
+      }
+      else
+        crossOver(at, leaving, side);
       // (The ball on the new generator is the same ball: Newton only polishes it.)
       if (!System.correct(at, Solve) || (at.x - crossing.x).norm() > 1e-6 * Size)
         fail("3D MAT: the seam through ", describe(crossing), " could not cross from ", Generators[face].name(), " onto ",
@@ -972,7 +1032,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   const Vec3 arrival = System.tangent(end).segment<3>(6);
   const Vec3 back = seam.balls[seam.balls.size() - 2].x - end.x;
   if (arrival.norm() > 0.0)
-    Result.nodes[endNode].directions.push_back(arrival.dot(back) >= 0.0 ? arrival.normalized() : Vec3(-arrival.normalized()));
+    depart(endNode, arrival.dot(back) >= 0.0 ? arrival.normalized() : Vec3(-arrival.normalized()), end, seam.touchpoints);
   // The triplet at the end (it may have changed across smooth edges) is traced from there.
   Traced.insert({ endNode, sorted({ ball.generators[0], ball.generators[1], ball.generators[2] }) });
   // Node balls as the seam's ends, so the polyline shares the node's point.
@@ -1064,11 +1124,29 @@ std::set<std::pair<int, int>> Tracer::sheetPairs(const MAT3DSeam& seam, size_t b
 {
   const MedialBall3D& ball = seam.balls[b];
   std::set<std::pair<int, int>> pairs;
-  for (int i = 0; i < 3; ++i)
-    for (int j = i + 1; j < 3; ++j)
-      pairs.insert(std::minmax(ball.generators[i], ball.generators[j]));
   if (seam.touchpoints <= 3 || seam.balls.size() < 3 || ball.r <= Degenerate)
+  {
+    // The sheet of touches i and j leaves the seam in the direction w (across the seam's
+    // tangent) in which the third generator k recedes: N_i·w = N_j·w < N_k·w. A touch on
+    // the border of its entity's domain belongs to the entity that direction enters.
+    const size_t before = b > 0 ? b - 1 : b, after = b + 1 < seam.balls.size() ? b + 1 : b;
+    const Vec3 tangent = seam.balls[after].x - seam.balls[before].x;
+    Vec3 normal[3];
+    for (int i = 0; i < 3; ++i)
+      normal[i] = Generators[ball.generators[i]].evaluate(ball.q[i]).normal;
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+      {
+        const int k = 3 - i - j;
+        Vec3 w = tangent.cross(normal[i] - normal[j]);
+        if (w.dot(normal[k] - normal[i]) < 0.0)
+          w = -w;
+        const bool across = ball.r > Degenerate && w.norm() > 1e-9 * tangent.norm();
+        pairs.insert(std::minmax(across ? cornerOrEdge(ball, i, w) : ball.generators[i],
+          across ? cornerOrEdge(ball, j, w) : ball.generators[j]));
+      }
     return pairs;
+  }
   // The end balls are nodes, touched by every generator there: their order is the node's.
   if (b == 0 || b + 1 == seam.balls.size())
     return {};
@@ -1097,11 +1175,113 @@ std::set<std::pair<int, int>> Tracer::sheetPairs(const MAT3DSeam& seam, size_t b
   std::sort(order.begin(), order.end());
   std::set<std::pair<int, int>> adjacent;
   for (size_t k = 0; k < order.size(); ++k)
-    for (int g : touches[order[k].second].second)
-      for (int h : touches[order[(k + 1) % order.size()].second].second)
+  {
+    const auto& [p, gs] = touches[order[k].second];
+    const auto& [o, hs] = touches[order[(k + 1) % order.size()].second];
+    for (int g : gs)
+      for (int h : hs)
         if (g != h)
           adjacent.insert(std::minmax(g, h));
+    // And the entities the two touches move onto as the ball leaves the seam between them
+    // (a touch on the border of a wall at a reflex edge: the wall's sheet needs the seam).
+    Vec3 w = (p - ball.x).normalized() + (o - ball.x).normalized();
+    w -= w.dot(tangent) * tangent;
+    if (w.norm() > 1e-6)
+    {
+      const int g = sheetGenerator(ball, p, gs.front(), w), h = sheetGenerator(ball, o, hs.front(), w);
+      if (g != h)
+        adjacent.insert(std::minmax(g, h));
+    }
+  }
   return adjacent;
+}
+
+// A three-touch seam's touch i on a reflex edge at its end where a reflex corner is (the
+// normal, normal to the edge, on the border of the corner's cone), or on the corner with its
+// normal on that border: the seam (an arc around a staircase's low corner cell, between
+// floor and ceiling) solves with either, but moving the ball by w onto the sheet beside it
+// turns the normal by w's component along the edge: into the corner's cone when that points
+// away from the edge, else onto the edge.
+int Tracer::cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const
+{
+  const int g = ball.generators[i];
+  const Generator3D& gen = Generators[g];
+  const Touch3D touch = gen.evaluate(ball.q[i]);
+  const double same = std::max(1e-9 * Size, 1e3 * Degenerate);
+  if (gen.kind() == GeneratorKind3D::ReflexEdge)
+  {
+    const Edge3D& edge = B.edges()[gen.entity()];
+    for (int v : { edge.startVertex, edge.endVertex })
+    {
+      if (v < 0 || CornerGenerator[v] < 0 || (B.vertices()[v].point - touch.point).norm() > same)
+        continue;
+      const Generator3D& corner = Generators[CornerGenerator[v]];
+      if (corner.exitSide(corner.touchParameter(touch.point, ball.x), OnEntity) >= 0)
+        continue;
+      const Vec3 along = (v == edge.startVertex ? 1.0 : -1.0) * touch.dPoint.col(0).normalized();
+      return w.dot(along) < 0.0 ? CornerGenerator[v] : g;
+    }
+  }
+  else if (gen.kind() == GeneratorKind3D::ReflexCorner)
+  {
+    const double slack = std::max(1e-9, OnEntity / std::max(ball.r, OnEntity));
+    for (size_t e = 0; e < gen.cornerEdges().size(); ++e)
+    {
+      const Vec3& along = gen.cornerTangents()[e];
+      const int edge = gen.cornerEdges()[e];
+      if (EdgeGenerator[edge] >= 0 && std::abs(touch.normal.dot(along)) <= slack && w.dot(along) > 0.0)
+        return EdgeGenerator[edge];
+    }
+  }
+  return g;
+}
+
+// The generator of a ball's touch at `point` (by generator g) for the sheet beside the
+// seam in direction w. A touch on the border of its entity's domain is also a touch of the
+// entity beyond: a wall touched at its foot on a reflex edge and that edge, a reflex edge
+// touched at its end and the reflex corner there. Each solves the seam's ball, and a seam
+// can run along such a border (a staircase's mid-line touching a step's wall at its foot;
+// an arc around a reflex corner between a floor and a ceiling), but the sheet beside it
+// has the entity the touch moves onto when the ball moves by w: the nearest of them from
+// the moved centre whose normal there passes through it.
+int Tracer::sheetGenerator(const MedialBall3D& ball, const Vec3& point, int g, const Vec3& w) const
+{
+  const double same = std::max(1e-9 * Size, 1e3 * Degenerate);
+  std::vector<int> candidates{ g };
+  for (int f : Tree.candidatesWithin(point, same))
+  {
+    if (Generators[f].distance(point) > same)
+      continue;
+    candidates.push_back(f);
+    for (size_t e = B.faces().size(); e < Generators.size(); ++e)
+    {
+      const std::vector<int>& faces = Generators[e].faces();
+      if (std::find(faces.begin(), faces.end(), f) != faces.end() && Generators[e].distance(point) <= same)
+        candidates.push_back(static_cast<int>(e));
+    }
+  }
+  if (candidates.size() == 1 || ball.r <= 1e3 * same)
+    return g;
+  const double delta = 1e-4 * ball.r;
+  const Vec3 moved = ball.x + delta * w.normalized();
+  int best = g;
+  double nearest = Unbounded;
+  for (int c : candidates)
+  {
+    const Generator3D& gen = Generators[c];
+    const Vec3 foot = gen.nearestPoint(moved);
+    const double d = (foot - moved).norm();
+    const Vec2 q = gen.kind() == GeneratorKind3D::Face ? gen.parameterOf(foot) : gen.touchParameter(foot, moved);
+    const Touch3D t = gen.evaluate(q);
+    if ((t.point + d * t.normal - moved).norm() > 1e-3 * delta || gen.exitSide(q, same) >= 0)
+      continue; // the moved ball does not touch c along c's normal
+    if (d < nearest - 1e-3 * delta * delta / ball.r)
+    {
+      nearest = d;
+      best = c;
+    }
+  }
+  return best;
 }
 
 // Every pair of faces in a seam's triplet (at any of its balls: a triplet changes across
@@ -1179,22 +1359,65 @@ void Tracer::startFrom(int node)
         std::fprintf(stderr, "node %d: triplet %d %d %d leaves with %d touchpoints\n", node, t[0], t[1], t[2], touchpoints);
 #endif
         Traced.insert({ node, t });
-        // Two triplets with one seam: coplanar faces (a planar face split into triangles)
-        // both touch the ball leaving along their common edge. One seam per direction.
         const Vec3 d = tangent.segment<3>(6).normalized();
-        bool taken = false;
-        for (const Vec3& other : Result.nodes[node].directions)
-          taken = taken || (other - d).norm() < 1e-6;
-#ifdef EXACTMAT_TRACE3D_DEBUG
-        for (const Vec3& other : Result.nodes[node].directions)
-          std::fprintf(stderr, "   direction (%.9f %.9f %.9f) vs known (%.9f %.9f %.9f)\n", d.x(), d.y(), d.z(), other.x(), other.y(), other.z());
-#endif
-        if (taken)
+        if (departed(node, d, ball, touchpoints))
           continue;
-        Result.nodes[node].directions.push_back(d);
+        depart(node, d, ball, touchpoints);
         trace(node, ball, tangent, touchpoints);
         reportProgress();
       }
+}
+
+void Tracer::depart(int node, const Vec3& direction, const MedialBall3D& triplet, int touchpoints)
+{
+  Departure d{ direction, {} };
+  if (touchpoints <= 3)
+    for (int i = 0; i < 3; ++i)
+      d.contacts.push_back(Generators[triplet.generators[i]].evaluate(triplet.q[i]).point);
+  Departures[node].push_back(std::move(d));
+  Result.nodes[node].directions.push_back(direction);
+}
+
+// Whether the seam of `triplet` (its touches at the node) leaving in `direction` is one
+// already traced from or to the node. Two triplets with one seam: coplanar faces (a planar
+// face split into triangles or squares) both touch the ball leaving along their common
+// edge, at one point; a degenerate seam is every triplet of its touches. Two seams can
+// also leave in one direction with different touches, tangent to each other at a
+// degenerate junction (a staircase's straight seam along a wall and the arc around a
+// reflex corner beside it, both between the same floor and ceiling): both are traced —
+// when both have three touchpoints (a degenerate seam keeps its direction).
+bool Tracer::departed(int node, const Vec3& direction, const MedialBall3D& triplet, int touchpoints) const
+{
+  const auto it = Departures.find(node);
+  if (it == Departures.end())
+    return false;
+  const double same = std::max(1e-6 * Result.nodes[node].ball.r, 1e3 * Degenerate);
+  for (const Departure& d : it->second)
+  {
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "   direction (%.9f %.9f %.9f) vs known (%.9f %.9f %.9f)\n", direction.x(), direction.y(),
+      direction.z(), d.direction.x(), d.direction.y(), d.direction.z());
+#endif
+    if ((d.direction - direction).norm() >= 1e-6)
+      continue;
+    bool shared = true;
+    for (int i = 0; i < 3 && shared && !d.contacts.empty() && touchpoints <= 3; ++i)
+    {
+      const Vec3 p = Generators[triplet.generators[i]].evaluate(triplet.q[i]).point;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "     touch of %d at (%.9g %.9g %.9g)\n", triplet.generators[i], p.x(), p.y(), p.z());
+      for (const Vec3& c : d.contacts)
+        std::fprintf(stderr, "       known (%.9g %.9g %.9g)\n", c.x(), c.y(), c.z());
+#endif
+      bool found = false;
+      for (const Vec3& c : d.contacts)
+        found = found || (c - p).norm() <= same;
+      shared = found;
+    }
+    if (shared)
+      return true;
+  }
+  return false;
 }
 
 MAT3D Tracer::run()
