@@ -96,7 +96,7 @@ private:
   int addNode(const MedialBall3D& ball, int vertex, double merge = 0.0);
   int findNode(const Vec3& x, double merge = 0.0) const;
   void startFrom(int node);
-  bool outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
+  bool outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
   void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
@@ -288,10 +288,21 @@ bool Tracer::merging(const MedialBall3D& ball, int& a, int& b) const
 int Tracer::seamEndAtVertex(const MedialBall3D& ball, int a, int b)
 {
   const Vec3 p = Generators[ball.generators[a]].evaluate(ball.q[a]).point;
+  // The nearest vertex, if near: two touches meeting tangentially are located only to about
+  // the square root of the rounding (1e-8 of the size), so the margin is a hundred times that.
   int vertex = -1;
-  for (int v = 0; v < static_cast<int>(B.vertices().size()) && vertex < 0; ++v)
-    if ((B.vertices()[v].point - p).norm() <= 1e-8 * Size)
+  double nearest = 1e-6 * Size;
+  for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
+    if ((B.vertices()[v].point - p).norm() <= nearest)
+    {
+      nearest = (B.vertices()[v].point - p).norm();
       vertex = v;
+    }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+  for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
+    if ((B.vertices()[v].point - p).norm() <= 1e-3 * Size)
+      std::fprintf(stderr, "   merge %d/%d: vertex %d at %.3g of the size\n", a, b, v, (B.vertices()[v].point - p).norm() / Size);
+#endif
   if (vertex < 0)
     fail("3D MAT: two touchpoints of ", describe(ball), " merge at ", format(B.userPoint(p)),
       ", not at a vertex: skeletal edges of curved faces are not supported yet");
@@ -486,8 +497,9 @@ bool Tracer::step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
 // The seam of triplet t leaves the node along ±(null vector) when every other face of the
 // node recedes from the ball (first order: N_g·dX − dr > 0) and a short trial step keeps
 // the touchpoints on their faces and the ball clear of the node's other faces.
-bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const
+bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const
 {
+  const MAT3DNode& node = Result.nodes[index];
   const MedialBall3D& nb = node.ball;
   ball = MedialBall3D();
   for (int g : t)
@@ -498,6 +510,36 @@ bool Tracer::outgoing(const MAT3DNode& node, const Triplet& t, MedialBall3D& bal
   }
   ball.x = nb.x;
   ball.r = nb.r;
+  // First order, before the null vector: every touch's normal N_i satisfies N_i·dX = dr
+  // along the seam, so the centre moves along ±(N_a − N_b) × (N_a − N_c); a triplet whose
+  // both directions bring another generator of the node into the ball leaves nothing (most
+  // triplets of a junction with many generators). Looser than the test below. A direction
+  // already traced with the same touches (another piece of a coplanar face or an edge
+  // touching where this triplet does) needs no null vector either.
+  {
+    Vec3 n[3];
+    for (int i = 0; i < 3; ++i)
+      n[i] = Generators[ball.generators[i]].evaluate(ball.q[i]).normal;
+    const Vec3 d = (n[0] - n[1]).cross(n[0] - n[2]);
+    if (d.norm() > 1e-6)
+    {
+      bool either = false;
+      for (int sign = 1; sign >= -1 && !either; sign -= 2)
+      {
+        const Vec3 dx = sign * d.normalized();
+        const double dr = n[0].dot(dx);
+        if (node.vertex >= 0 && !(dr > 1e-9))
+          continue;
+        double worst = 1.0;
+        for (int i = 0; i < nb.size(); ++i)
+          if (std::find(t.begin(), t.end(), nb.generators[i]) == t.end())
+            worst = std::min(worst, Generators[nb.generators[i]].evaluate(nb.q[i]).normal.dot(dx) - dr);
+        either = worst >= -1e-6 && !departed(index, dx, ball, 3);
+      }
+      if (!either)
+        return false;
+    }
+  }
   double separation = 1.0;
   const Eigen::VectorXd t0 = System.tangent(ball, &separation);
 #ifdef EXACTMAT_TRACE3D_DEBUG
@@ -911,11 +953,16 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       // neighbour across the side crossed may be no nearer than the entity left, and the
       // touch goes back and forth. There the touch goes on with the entity nearest the ball
       // moved on along the seam (the rule the sheets use across a seam).
-      const int nearest = stalled >= 1 ? sheetGenerator(at, Generators[face].evaluate(at.q[leaving]).point, face,
+      const int nearest = stalled >= 3 ? sheetGenerator(at, Generators[face].evaluate(at.q[leaving]).point, face,
                                            t.segment<3>(6))
                                        : face;
-      if (nearest != face &&
-        std::find(at.generators.begin(), at.generators.end(), nearest) == at.generators.end())
+      // (Not an entity on a face another touch of the ball lies on: that touch is there.)
+      bool shared = false;
+      for (int i = 0; i < 3; ++i)
+        for (int f : Generators[nearest].faces())
+          shared = shared || (i != leaving && std::count(Generators[at.generators[i]].faces().begin(),
+                                                Generators[at.generators[i]].faces().end(), f) > 0);
+      if (nearest != face && !shared)
       {
         const Generator3D& to = Generators[nearest];
         const Vec3 foot = to.nearestPoint(at.x);
@@ -1341,19 +1388,30 @@ void Tracer::startFrom(int node)
   // merged touches make no seam.
   if (Result.nodes[node].seamEnd)
     return;
-  const std::vector<int> faces = Result.nodes[node].ball.generators;
+  const MedialBall3D& nb = Result.nodes[node].ball;
+  const std::vector<int> faces = nb.generators;
   const int k = static_cast<int>(faces.size());
+  // At a junction a seam's three touches are distinct points: generators touching at one
+  // point (coplanar pieces, a wall and the reflex edge at its foot) are never in one
+  // triplet. (At a vertex every generator touches the vertex.)
+  Vec3List at(k);
+  for (int i = 0; i < k; ++i)
+    at[i] = Generators[faces[i]].evaluate(nb.q[i]).point;
+  const double same = nb.r > 1e3 * Degenerate ? 1e-6 * nb.r : -1.0;
+  auto apart = [&](int i, int j) { return (at[i] - at[j]).norm() > same; };
   for (int a = 0; a < k; ++a)
     for (int b = a + 1; b < k; ++b)
       for (int c = b + 1; c < k; ++c)
       {
+        if (!apart(a, b) || !apart(a, c) || !apart(b, c))
+          continue;
         const Triplet t = sorted({ faces[a], faces[b], faces[c] });
         if (Traced.count({ node, t }))
           continue;
         MedialBall3D ball;
         Eigen::VectorXd tangent;
         int touchpoints = 3;
-        if (!outgoing(Result.nodes[node], t, ball, tangent, touchpoints))
+        if (!outgoing(node, t, ball, tangent, touchpoints))
           continue;
 #ifdef EXACTMAT_TRACE3D_DEBUG
         std::fprintf(stderr, "node %d: triplet %d %d %d leaves with %d touchpoints\n", node, t[0], t[1], t[2], touchpoints);
