@@ -615,9 +615,17 @@ private:
 
   // The face sides (generator, patch side) the last vertex of `run` touches its faces
   // on, leaving out those the run's middle lies on too (the side it runs along).
-  std::vector<std::pair<int, int>> freeSides(const std::vector<SheetVertex>& run) const
+  std::vector<std::pair<int, int>> freeSides(const std::vector<SheetVertex>& given) const
   {
     const double near = slack(1e-7, 1e4);
+    // One vertex per ball: a seam that changes triplets at a crossing lands several balls
+    // on one point, and a middle taken among those would be the end itself.
+    std::vector<SheetVertex> run;
+    for (const SheetVertex& v : given)
+      if (run.empty() || (v.x - run.back().x).norm() > Touch)
+        run.push_back(v);
+      else
+        run.back() = v;
     std::vector<std::pair<int, int>> out;
     for (int g : { P, O })
       for (const Generator3D* member : Side[g].members())
