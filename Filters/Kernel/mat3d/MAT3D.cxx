@@ -1266,7 +1266,8 @@ int Tracer::cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const
       if (corner.exitSide(corner.touchParameter(touch.point, ball.x), OnEntity) >= 0)
         continue;
       const Vec3 along = (v == edge.startVertex ? 1.0 : -1.0) * touch.dPoint.col(0).normalized();
-      return w.dot(along) < 0.0 ? CornerGenerator[v] : g;
+      // (A sheet across the seam whose w has no component along the edge stays with it.)
+      return w.dot(along) < -1e-6 * w.norm() ? CornerGenerator[v] : g;
     }
   }
   else if (gen.kind() == GeneratorKind3D::ReflexCorner)
@@ -1276,7 +1277,7 @@ int Tracer::cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const
     {
       const Vec3& along = gen.cornerTangents()[e];
       const int edge = gen.cornerEdges()[e];
-      if (EdgeGenerator[edge] >= 0 && std::abs(touch.normal.dot(along)) <= slack && w.dot(along) > 0.0)
+      if (EdgeGenerator[edge] >= 0 && std::abs(touch.normal.dot(along)) <= slack && w.dot(along) > 1e-6 * w.norm())
         return EdgeGenerator[edge];
     }
   }
