@@ -79,7 +79,7 @@ private:
   bool attached(const MedialBall3D& ball, int face) const;
   int reflexEntityAt(int face, const Vec3& foot) const;
   int beyondVertex(int edge, int vertex) const;
-  void crossOver(MedialBall3D& ball, int i, int side) const;
+  void crossOver(MedialBall3D& ball, int i, int side, const Vec3* motion = nullptr) const;
   bool merging(const MedialBall3D& ball, int& a, int& b) const;
   bool sameContact(const MedialBall3D& ball, const Vec3& a, const Vec3& b) const;
   int contactCount(const MedialBall3D& ball) const;
@@ -349,7 +349,7 @@ int Tracer::seamEndAtVertex(const MedialBall3D& ball, int a, int b)
 // on to the entity beyond — the neighbour face across a smooth edge, the reflex edge at a
 // face's side, the face at either end of a reflex edge's normal arc, the corner (or the
 // continuing edge) at its end, the edge whose arc bounds a corner's cone.
-void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
+void Tracer::crossOver(MedialBall3D& ball, int i, int side, const Vec3* motion) const
 {
   const int g = ball.generators[i];
   const Generator3D& from = Generators[g];
@@ -385,6 +385,20 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side) const
 #endif
       if (next < 0 && std::min(std::abs(theta), std::abs(theta - alpha)) <= 1e-5)
         next = std::abs(theta) <= std::abs(theta - alpha) ? edge.faceA : edge.faceB;
+      // Else, knowing where the seam goes: the entity at the vertex nearest the ball moved
+      // on that touches it along its normal (another reflex edge turning the corner, a face
+      // beside it), unless it lies on a face another touch of the ball is on.
+      if (next < 0 && motion)
+      {
+        const int nearest = sheetGenerator(ball, p, g, *motion);
+        bool shared = false;
+        for (int k = 0; k < ball.size(); ++k)
+          for (int f : Generators[nearest].faces())
+            shared = shared || (k != i && std::count(Generators[ball.generators[k]].faces().begin(),
+                                            Generators[ball.generators[k]].faces().end(), f) > 0);
+        if (nearest != g && !shared)
+          next = nearest;
+      }
       if (next < 0)
         fail("3D MAT: the seam through ", describe(ball), " reached the end of ", from.name(), " at ",
           format(B.userPoint(B.vertices()[vertex].point)),
@@ -970,7 +984,10 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         at.q[leaving] = to.kind() == GeneratorKind3D::Face ? to.parameterOf(foot) : to.touchParameter(foot, at.x);
       }
       else
-        crossOver(at, leaving, side);
+      {
+        const Vec3 motion = t.segment<3>(6);
+        crossOver(at, leaving, side, &motion);
+      }
       // (The ball on the new generator is the same ball: Newton only polishes it.)
       if (!System.correct(at, Solve) || (at.x - crossing.x).norm() > 1e-6 * Size)
         fail("3D MAT: the seam through ", describe(crossing), " could not cross from ", Generators[face].name(), " onto ",
