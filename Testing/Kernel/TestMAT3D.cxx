@@ -519,9 +519,9 @@ TEST(MAT3D, RandomStaircasesAreVerified)
 // The same kind of staircases turned about random axes, scaled by 1e-3 … 1e3 and moved by
 // up to 1e4 × their size: the grid's coincidences are now only as exact as the rounding of
 // the moved input. Every point that comes out is verified; a solid the tracer cannot do is
-// refused by name (a corner where convex and reflex edges meet, a junction at a crossing it
-// cannot polish), never traced wrongly. (A driver over 96: 90 consistent, 2 flagged by the
-// graph check, 4 refused.)
+// refused by name (a corner where convex and reflex edges meet, a crossing at a grid vertex
+// it cannot settle), never traced wrongly. (A driver over 96: 92 consistent, 2 flagged by the
+// graph check, 2 refused.)
 constexpr int MinimumMovedStaircasesTraced = 22; // of 24 (measured: 24)
 
 TEST(MAT3D, MovedStaircasesAreVerifiedOrRefused)
