@@ -87,6 +87,7 @@ private:
   std::set<std::pair<int, int>> sheetPairs(const MAT3DSeam& seam, size_t b) const;
   int sheetGenerator(const MedialBall3D& ball, const Vec3& point, int g, const Vec3& w) const;
   int cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const;
+  bool onAnotherTouchFace(const MedialBall3D& ball, int i, int g) const;
   int seamEndAtVertex(const MedialBall3D& ball, int a, int b);
   // Distance from x to generator f (global closest point on its entity).
   double faceDistance(int f, const Vec3& x) const { return Generators[f].distance(x); }
@@ -345,6 +346,21 @@ int Tracer::seamEndAtVertex(const MedialBall3D& ball, int a, int b)
   return node;
 }
 
+// Whether entity g lies on a face that a touch of the ball other than touch i lies on: that
+// touch is there already, so g cannot take over touch i (a crossing's candidate).
+bool Tracer::onAnotherTouchFace(const MedialBall3D& ball, int i, int g) const
+{
+  for (int k = 0; k < ball.size(); ++k)
+    if (k != i)
+      for (int f : Generators[g].faces())
+      {
+        const std::vector<int>& faces = Generators[ball.generators[k]].faces();
+        if (std::find(faces.begin(), faces.end(), f) != faces.end())
+          return true;
+      }
+  return false;
+}
+
 // Touch i of the ball has left its entity through `side` (Generator3D::exitSide): it goes
 // on to the entity beyond — the neighbour face across a smooth edge, the reflex edge at a
 // face's side, the face at either end of a reflex edge's normal arc, the corner (or the
@@ -391,12 +407,7 @@ void Tracer::crossOver(MedialBall3D& ball, int i, int side, const Vec3* motion) 
       if (next < 0 && motion)
       {
         const int nearest = sheetGenerator(ball, p, g, *motion);
-        bool shared = false;
-        for (int k = 0; k < ball.size(); ++k)
-          for (int f : Generators[nearest].faces())
-            shared = shared || (k != i && std::count(Generators[ball.generators[k]].faces().begin(),
-                                            Generators[ball.generators[k]].faces().end(), f) > 0);
-        if (nearest != g && !shared)
+        if (nearest != g && !onAnotherTouchFace(ball, i, nearest))
           next = nearest;
       }
       if (next < 0)
@@ -972,13 +983,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       const int nearest = stalled >= 3 ? sheetGenerator(at, Generators[face].evaluate(at.q[leaving]).point, face,
                                            t.segment<3>(6))
                                        : face;
-      // (Not an entity on a face another touch of the ball lies on: that touch is there.)
-      bool shared = false;
-      for (int i = 0; i < 3; ++i)
-        for (int f : Generators[nearest].faces())
-          shared = shared || (i != leaving && std::count(Generators[at.generators[i]].faces().begin(),
-                                                Generators[at.generators[i]].faces().end(), f) > 0);
-      if (nearest != face && !shared)
+      if (nearest != face && !onAnotherTouchFace(at, leaving, nearest))
       {
         const Generator3D& to = Generators[nearest];
         const Vec3 foot = to.nearestPoint(at.x);
