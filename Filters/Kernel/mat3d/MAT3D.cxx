@@ -43,6 +43,10 @@ public:
         EdgeGenerator[Generators[g].entity()] = g;
       else if (Generators[g].kind() == GeneratorKind3D::ReflexCorner)
         CornerGenerator[Generators[g].entity()] = g;
+    FaceReflexEntities.resize(B.faces().size());
+    for (int g = static_cast<int>(B.faces().size()); g < static_cast<int>(Generators.size()); ++g)
+      for (int f : Generators[g].faces())
+        FaceReflexEntities[f].push_back(g);
     std::vector<Box3> boxes;
     for (const Face3D& f : B.faces())
       boxes.push_back(f.patch.boundingBox());
@@ -78,6 +82,7 @@ private:
   }
   bool attached(const MedialBall3D& ball, int face) const;
   int reflexEntityAt(int face, const Vec3& foot) const;
+  std::vector<int> reflexEntitiesAt(int face, const Vec3& point, double near) const;
   int beyondVertex(int edge, int vertex) const;
   void crossOver(MedialBall3D& ball, int i, int side, const Vec3* motion = nullptr) const;
   bool merging(const MedialBall3D& ball, int& a, int& b) const;
@@ -124,6 +129,7 @@ private:
   BoundingVolumeHierarchy Tree;
   std::map<std::pair<int, int>, int> SideEdge;
   std::vector<int> EdgeGenerator, CornerGenerator; // by edge / vertex, −1 where none
+  std::vector<std::vector<int>> FaceReflexEntities; // by face: its reflex edges and corners, ascending
   double Solve = 0.0, Degenerate = 0.0, Margin = 0.0, NodeMerge = 0.0, OnEntity = 0.0;
 
   MAT3D Result;
@@ -166,22 +172,25 @@ std::vector<int> Tracer::facesOutside(const MedialBall3D& ball, double radius) c
   return out;
 }
 
+// The reflex edges and corners of `face` within `near` of `point` (a point on the face's
+// border), in generator order.
+std::vector<int> Tracer::reflexEntitiesAt(int face, const Vec3& point, double near) const
+{
+  std::vector<int> out;
+  for (int g : FaceReflexEntities[face])
+    if (Generators[g].distance(point) <= near)
+      out.push_back(g);
+  return out;
+}
+
 // The reflex corner or edge generator at `foot`, a point on the border of `face`, or −1.
 int Tracer::reflexEntityAt(int face, const Vec3& foot) const
 {
-  const double near = 1e-9 * Size;
-  int best = -1;
-  for (size_t g = B.faces().size(); g < Generators.size(); ++g)
-  {
-    const Generator3D& gen = Generators[g];
-    const std::vector<int>& faces = gen.faces();
-    if (std::find(faces.begin(), faces.end(), face) == faces.end() || gen.distance(foot) > near)
-      continue;
-    if (gen.kind() == GeneratorKind3D::ReflexCorner)
-      return static_cast<int>(g); // a corner before the edges that end at it
-    best = static_cast<int>(g);
-  }
-  return best;
+  const std::vector<int> at = reflexEntitiesAt(face, foot, 1e-9 * Size);
+  for (int g : at)
+    if (Generators[g].kind() == GeneratorKind3D::ReflexCorner)
+      return g; // a corner before the edges that end at it
+  return at.empty() ? -1 : at.back();
 }
 
 // The generator after reflex edge `edge` past its end `vertex`: the corner there, or the
@@ -811,13 +820,9 @@ void Tracer::polishJunction(MedialBall3D& j) const
     std::vector<int> touching;
     if ((j.x - foot).cross(normal).norm() <= 1e-8 * footDistance)
       touching.push_back(f);
-    for (size_t g = B.faces().size(); g < Generators.size(); ++g)
-    {
-      const std::vector<int>& faces = Generators[g].faces();
-      if (std::find(faces.begin(), faces.end(), f) != faces.end() && Generators[g].distance(foot) <= 1e-9 * Size &&
-        Generators[g].exitSide(Generators[g].touchParameter(foot, j.x), 1e-9 * Size) < 0)
-        touching.push_back(static_cast<int>(g));
-    }
+    for (int g : reflexEntitiesAt(f, foot, 1e-9 * Size))
+      if (Generators[g].exitSide(Generators[g].touchParameter(foot, j.x), 1e-9 * Size) < 0)
+        touching.push_back(g);
     for (int g : touching)
       if (std::find(j.generators.begin(), j.generators.end(), g) == j.generators.end())
       {
@@ -1325,12 +1330,8 @@ int Tracer::sheetGenerator(const MedialBall3D& ball, const Vec3& point, int g, c
     if (Generators[f].distance(point) > same)
       continue;
     candidates.push_back(f);
-    for (size_t e = B.faces().size(); e < Generators.size(); ++e)
-    {
-      const std::vector<int>& faces = Generators[e].faces();
-      if (std::find(faces.begin(), faces.end(), f) != faces.end() && Generators[e].distance(point) <= same)
-        candidates.push_back(static_cast<int>(e));
-    }
+    for (int e : reflexEntitiesAt(f, point, same))
+      candidates.push_back(e);
   }
   if (candidates.size() == 1 || ball.r <= 1e3 * same)
     return g;
