@@ -524,24 +524,41 @@ TEST(MAT3D, RandomStaircasesAreVerified)
 // graph check, 2 refused.)
 constexpr int MinimumMovedStaircasesTraced = 22; // of 24 (measured: 24)
 
+// Staircase k (of 24 per seed) of random seed `seed`, turned, scaled and moved by the
+// motion drawn for it: one motion stream runs over seeds 1, 2, … in turn (the driver's
+// family of 96).
+std::vector<PatchPiece> movedStaircase(int seed, int k)
+{
+  std::mt19937 motion(77);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int s = 1; s <= seed; ++s)
+  {
+    std::mt19937 rng(s);
+    for (int i = 0; i < 24; ++i)
+    {
+      const int n = 2 + i % 4, height = 2 + (i / 4) % 2;
+      const std::vector<PatchPiece> base = randomStaircase(rng, n, height);
+      const Vec3 axis = Vec3(u(motion) - 0.5, u(motion) - 0.5, u(motion) - 0.5).normalized();
+      const Eigen::Matrix3d rotation = Eigen::AngleAxisd(6.28 * u(motion), axis).toRotationMatrix();
+      const double scale = std::pow(10.0, -3.0 + 6.0 * u(motion));
+      const Vec3 offset = scale * std::pow(10.0, 4.0 * u(motion)) * Vec3(1.0, -0.7, 0.4);
+      if (s == seed && i == k)
+        return movedPieces(base, rotation, scale, offset, 1.0);
+    }
+  }
+  return {};
+}
+
 TEST(MAT3D, MovedStaircasesAreVerifiedOrRefused)
 {
-  std::mt19937 rng(1), motion(77);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   int traced = 0;
   for (int k = 0; k < 24; ++k)
   {
-    const int n = 2 + k % 4, height = 2 + (k / 4) % 2;
-    const std::vector<PatchPiece> base = randomStaircase(rng, n, height);
-    const Vec3 axis = Vec3(u(motion) - 0.5, u(motion) - 0.5, u(motion) - 0.5).normalized();
-    const Eigen::Matrix3d rotation = Eigen::AngleAxisd(6.28 * u(motion), axis).toRotationMatrix();
-    const double scale = std::pow(10.0, -3.0 + 6.0 * u(motion));
-    const Vec3 offset = scale * std::pow(10.0, 4.0 * u(motion)) * Vec3(1.0, -0.7, 0.4);
     const std::string what = "moved staircase " + std::to_string(k);
     Traced t;
     try
     {
-      t = trace(movedPieces(base, rotation, scale, offset, 1.0));
+      t = trace(movedStaircase(1, k));
     }
     catch (const InputError& e)
     {
@@ -552,6 +569,30 @@ TEST(MAT3D, MovedStaircasesAreVerifiedOrRefused)
     expectPointsVerified(t, what);
   }
   EXPECT_GE(traced, MinimumMovedStaircasesTraced);
+}
+
+// A junction of four generators of a moved staircase (a reflex edge's touch where a wall
+// meets a floor, 350 and 120 × the size from the origin) solves only to the moved input's
+// rounding: polished to that, not to 1e-13 of the size ("could not be polished" before).
+TEST(MAT3D, MovedStaircaseJunctionsArePolishedToTheInputsRounding)
+{
+  for (const auto& [seed, k] : { std::pair<int, int>{ 3, 21 }, { 4, 23 } })
+  {
+    const std::string what = "moved staircase " + std::to_string(k) + " of seed " + std::to_string(seed);
+    Traced t;
+    try
+    {
+      t = trace(movedStaircase(seed, k));
+    }
+    catch (const InputError& e)
+    {
+      ADD_FAILURE() << what << ": " << e.what();
+      continue;
+    }
+    EXPECT_FALSE(t.junctions().empty()) << what;
+    expectPointsVerified(t, what);
+    EXPECT_TRUE(topologyProblems(t).empty()) << what;
+  }
 }
 
 // Cross-check with the 2.5D construction: a polygonal profile extruded, its faces as the
