@@ -11,6 +11,7 @@
 #include "shapes/Catalogue.h"
 #include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
+#include "shapes/RandomShapes.h"
 
 #include <gtest/gtest.h>
 
@@ -617,6 +618,50 @@ TEST(MAT3D, ExtrudedPolygonsAgreeWithTheSweptSolidMAT)
     for (const MedialPoint3D& p : expected)
       EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts)) << name << ": " << p.x.transpose();
     expectVerified(t, name + " extruded");
+  }
+}
+
+// The same cross-check on random star polygons and jittered regular polygons (3–14 edges,
+// reflex corners at random angles, lengths 0.5–4) extruded. Among them are profiles whose
+// footpoint steps from an edge's end over a reflex corner onto the next edge between two
+// samples: the cap tiling once gave that corner a patch of no area, and the solid was
+// refused as non-manifold. (A driver over 300 more: 290 agree one for one, 5 flagged by the
+// graph check, 5 refused, none wrong.)
+TEST(MAT3D, RandomExtrudedPolygonsAgreeWithTheSweptSolidMAT)
+{
+  RandomEngine rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 12; ++k)
+  {
+    const int edges = 3 + static_cast<int>(u(rng) * 12);
+    const double length = 0.5 + 3.5 * u(rng);
+    const RandomShape shape = k % 2 == 0 ? randomStarPolygon(rng, edges) : perturbedRegularPolygon(rng, edges, 0.05);
+    const std::string what = "extruded random polygon " + std::to_string(k);
+    const Boundary2D profile = Boundary2D::build(curvePieces(shape.curves));
+    const Generators generators(profile);
+    const MedialGraph graph = computeMAT2D(generators);
+    const SweepMap sweep(profile, Sweep::extrusion(length));
+    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
+    Traced t;
+    try
+    {
+      t = trace(sweptSolidFaces(generators, graph, sweep));
+    }
+    catch (const InputError& e)
+    {
+      ADD_FAILURE() << what << ": " << e.what();
+      continue;
+    }
+    int expected = 0;
+    for (const MedialElement& e : swept.elements)
+      if (e.type == MedialElementType::Junction)
+      {
+        ++expected;
+        const MedialPoint3D& p = swept.points[e.points.front()];
+        EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts, 1e-8)) << what << ": " << p.x.transpose();
+      }
+    EXPECT_EQ(static_cast<int>(t.junctions().size()), expected) << what;
+    expectVerified(t, what);
   }
 }
 

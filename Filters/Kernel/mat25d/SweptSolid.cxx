@@ -69,8 +69,20 @@ public:
 
   // The strip between boundary pieces (from F_i to F_{i+1}) and the chord x_i → x_{i+1},
   // the chord split in proportion to the pieces' chord lengths.
-  void strip(const std::vector<BezierCurve>& pieces, const Vec2& x0, const Vec2& x1)
+  void strip(std::vector<BezierCurve> pieces, const Vec2& x0, const Vec2& x1)
   {
+    // A reflex corner passed on the way to an edge (the footpoint steps from one edge's end
+    // over the corner onto the next edge: a corner of no sweep between two samples) would
+    // get a point of the chord: a patch of no area whose ruling sides coincide, which
+    // makes the ruling at the corner an edge of three faces. The edge pieces take the chord.
+    auto isPoint = [](const BezierCurve& c) {
+      for (const Vec4& h : c.homogeneousPoints())
+        if (euclidean(h) != c.startPoint())
+          return false;
+      return true;
+    };
+    if (std::any_of(pieces.begin(), pieces.end(), [&](const BezierCurve& c) { return !isPoint(c); }))
+      pieces.erase(std::remove_if(pieces.begin(), pieces.end(), isPoint), pieces.end());
     double total = 0.0;
     std::vector<double> lengths;
     for (const BezierCurve& c : pieces)
