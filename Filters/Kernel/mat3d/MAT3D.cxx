@@ -609,31 +609,40 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
     MedialBall3D start = ball, next;
     Eigen::VectorXd direction = d;
     bool inside = false;
-    for (int attempt = 0; attempt < 4 && !inside; ++attempt)
+    // A seam shorter than the trial step (between two branch points of an extruded
+    // profile's MAT 1e-5 of the size apart, its touches on side pieces as narrow) is crossed
+    // past its end, its touches beyond the pieces they start on: shorter trials.
+    for (int shorter = 0; shorter < 3 && !inside; ++shorter)
     {
-      if (!step(start, direction, trial, next) || next.r < 0.0)
-        break;
-      int leaving = -1, side = -1;
-      for (int i = 0; i < 3 && leaving < 0; ++i)
-        if ((side = Generators[next.generators[i]].exitSide(next.q[i], OnEntity)) >= 0)
-          leaving = i;
-      inside = leaving < 0;
-      if (inside)
-        break;
-      MedialBall3D swapped = start;
-      try
+      start = ball;
+      direction = d;
+      const double length = trial / std::pow(16.0, shorter);
+      for (int attempt = 0; attempt < 4 && !inside; ++attempt)
       {
-        crossOver(swapped, leaving, side);
+        if (!step(start, direction, length, next) || next.r < 0.0)
+          break;
+        int leaving = -1, side = -1;
+        for (int i = 0; i < 3 && leaving < 0; ++i)
+          if ((side = Generators[next.generators[i]].exitSide(next.q[i], OnEntity)) >= 0)
+            leaving = i;
+        inside = leaving < 0;
+        if (inside)
+          break;
+        MedialBall3D swapped = start;
+        try
+        {
+          crossOver(swapped, leaving, side);
+        }
+        catch (const InputError&)
+        {
+          break; // nothing beyond (a convex edge): this triplet does not leave here
+        }
+        if (std::count(swapped.generators.begin(), swapped.generators.end(), swapped.generators[leaving]) > 1)
+          break;
+        start = swapped;
+        const Eigen::VectorXd n = System.tangent(start);
+        direction = n.segment<4>(6).dot(d.segment<4>(6)) < 0.0 ? Eigen::VectorXd(-n) : n;
       }
-      catch (const InputError&)
-      {
-        break; // nothing beyond (a convex edge): this triplet does not leave here
-      }
-      if (std::count(swapped.generators.begin(), swapped.generators.end(), swapped.generators[leaving]) > 1)
-        break;
-      start = swapped;
-      const Eigen::VectorXd n = System.tangent(start);
-      direction = n.segment<4>(6).dot(d.segment<4>(6)) < 0.0 ? Eigen::VectorXd(-n) : n;
     }
 #ifdef EXACTMAT_TRACE3D_DEBUG
     std::fprintf(stderr, "   inside %d\n", (int)inside);
@@ -649,11 +658,20 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
     if ((touch[0] - touch[1]).norm() <= same || (touch[0] - touch[2]).norm() <= same ||
       (touch[1] - touch[2]).norm() <= same)
       continue;
-    // The node's other generators stay outside the ball.
+    // The node's other generators stay outside the ball — but for those touching where a
+    // triplet's touch is (the neighbour across the smooth edge a touch runs along: an
+    // extruded profile's sides are split where its MAT's branch points touch), whose
+    // distance is the ball's radius only to the solve's rounding.
     bool clear = true;
     for (int g : nb.generators)
-      if (std::find(t.begin(), t.end(), g) == t.end())
-        clear = clear && faceDistance(g, next.x) >= next.r - Degenerate;
+    {
+      if (std::find(t.begin(), t.end(), g) != t.end())
+        continue;
+      const Vec3 foot = Generators[g].nearestPoint(next.x);
+      const bool atTouch = (foot - touch[0]).norm() <= same || (foot - touch[1]).norm() <= same ||
+        (foot - touch[2]).norm() <= same;
+      clear = clear && (atTouch || (foot - next.x).norm() >= next.r - Degenerate);
+    }
     if (!clear)
       continue;
     // Generators that keep touching along the seam — where the triplet does (coplanar
