@@ -381,6 +381,15 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
     const double slack = 1e-12;
     if (u >= -slack && u <= 1.0 + slack && v >= -slack && v <= 1.0 + slack)
       return -1;
+    // Outside by no more than the tolerance as a distance on the surface (a sliver piece of
+    // a surface split where MAT samples touch is 1e-6 of the size across its parameter
+    // range: 1e-12 of that range is far below the solve's rounding, and a touch running
+    // along its side would cross back and forth).
+    const Eigen::Matrix<double, 3, 2> d = evaluate(q).dPoint;
+    const double du = std::max({ -u, u - 1.0, 0.0 }) * d.col(0).norm(),
+                 dv = std::max({ -v, v - 1.0, 0.0 }) * d.col(1).norm();
+    if (std::max(du, dv) <= tolerance)
+      return -1;
   }
   // The side the point has crossed (or is nearest, past a corner).
   double out[4] = { -v, u - 1.0, v - 1.0, -u };
