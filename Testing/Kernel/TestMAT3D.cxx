@@ -688,6 +688,64 @@ TEST(MAT3D, RandomExtrudedPolygonsAgreeWithTheSweptSolidMAT)
   }
 }
 
+// Profiles revolved by part of a turn (faces of revolution: cylinders, cones, planes and
+// tori of lines, each surface cut into pieces where the profile's MAT samples touch) traced
+// as general solids: the 2.5D MAT's junctions one for one, every point verified, the graph
+// consistent. The random profile 15 (seed 1; 2 and others too) was refused ("keeps crossing edges
+// without moving") while a touch outside a curved piece was judged by 1e-12 of its
+// parameter range: on the sliver pieces a touch running along a side crossed back and
+// forth. (A driver over 60 random profiles: 58 agree, 2 refused by name; 29 before.)
+TEST(MAT3D, RevolvedPolygonsAgreeWithTheSweptSolidMAT)
+{
+  struct Case
+  {
+    std::string what;
+    std::vector<NurbsCurve> profile;
+    double angle, axis;
+  };
+  std::vector<Case> cases{ { "rectangle revolved 90 degrees", makeShape("rectangle").curves, 90.0, 3.0 },
+    { "L revolved 270 degrees", makeShape("l-shape").curves, 270.0, 3.0 } };
+  RandomEngine rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k <= 15; ++k)
+  {
+    const int edges = 3 + static_cast<int>(u(rng) * 12);
+    const double angle = 5.0 + 350.0 * u(rng), axis = 1.6 + 4.0 * u(rng);
+    const RandomShape shape = k % 2 == 0 ? randomStarPolygon(rng, edges) : perturbedRegularPolygon(rng, edges, 0.05);
+    if (k == 15)
+      cases.push_back({ "random profile " + std::to_string(k) + " revolved", shape.curves, angle, axis });
+  }
+  for (const Case& c : cases)
+  {
+    const Boundary2D profile = Boundary2D::build(curvePieces(c.profile));
+    const Generators generators(profile);
+    const MedialGraph graph = computeMAT2D(generators);
+    const SweepMap sweep(profile, Sweep::revolution(c.angle, Vec3(-c.axis, 0.0, 0.0), Vec3::UnitY()));
+    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
+    Traced t;
+    try
+    {
+      t = trace(sweptSolidFaces(generators, graph, sweep));
+    }
+    catch (const InputError& e)
+    {
+      ADD_FAILURE() << c.what << ": " << e.what();
+      continue;
+    }
+    int expected = 0;
+    for (const MedialElement& e : swept.elements)
+      if (e.type == MedialElementType::Junction)
+      {
+        ++expected;
+        const MedialPoint3D& p = swept.points[e.points.front()];
+        EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts, 1e-8)) << c.what << ": " << p.x.transpose();
+      }
+    EXPECT_EQ(static_cast<int>(t.junctions().size()), expected) << c.what;
+    expectVerified(t, c.what);
+    EXPECT_TRUE(topologyProblems(t).empty()) << c.what;
+  }
+}
+
 // The thesis' fixed-step mode (constant step 1e-3 of the size, emptiness checked every 1e-2):
 // the same junctions as the adaptive mode, every point verified, steps of the given length.
 TEST(MAT3D, FixedStepModeFindsTheSameJunctions)

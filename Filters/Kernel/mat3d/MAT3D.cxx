@@ -441,10 +441,30 @@ bool Tracer::empty(const MedialBall3D& ball) const
   const double radius = ball.r - Margin;
   if (radius <= 0.0)
     return true;
+  Vec3List touches;
+  for (int i = 0; i < ball.size(); ++i)
+    touches.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
   for (int f : facesOutside(ball, radius))
-    if (Generators[f].polygon() ? Generators[f].distance(ball.x) < radius
-                                : patchComesWithin(B.faces()[f].patch, ball.x, radius))
+  {
+    if (Generators[f].polygon())
+    {
+      if (Generators[f].distance(ball.x) < radius)
+        return false;
+      continue;
+    }
+    // A curved piece near a touchpoint (a surface split into pieces along the seam: the
+    // sides of a revolved profile, cut where its MAT samples touch) is tangent, or nearly,
+    // to the ball there: against the full radius its Bernstein test subdivides down to the
+    // margin around that point. Decided against a ball smaller by 1e-6 of the radius, as the
+    // touched faces themselves are (reentering): a face entering less deeply is caught at a
+    // later step if it goes on, by the verification if it leaves again.
+    bool nearTouch = false;
+    const Box3 box = B.faces()[f].patch.boundingBox();
+    for (const Vec3& p : touches)
+      nearTouch = nearTouch || distanceToBox(box, p) <= 0.05 * ball.r;
+    if (patchComesWithin(B.faces()[f].patch, ball.x, nearTouch ? ball.r * (1.0 - 1e-6) - Margin : radius))
       return false;
+  }
   return true;
 }
 
