@@ -441,9 +441,7 @@ bool Tracer::empty(const MedialBall3D& ball) const
   const double radius = ball.r - Margin;
   if (radius <= 0.0)
     return true;
-  Vec3List touches;
-  for (int i = 0; i < ball.size(); ++i)
-    touches.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
+  Vec3List touches; // (evaluated when a curved face needs them)
   for (int f : facesOutside(ball, radius))
   {
     if (Generators[f].polygon())
@@ -458,6 +456,9 @@ bool Tracer::empty(const MedialBall3D& ball) const
     // margin around that point. Decided against a ball smaller by 1e-6 of the radius, as the
     // touched faces themselves are (reentering): a face entering less deeply is caught at a
     // later step if it goes on, by the verification if it leaves again.
+    if (touches.empty())
+      for (int i = 0; i < ball.size(); ++i)
+        touches.push_back(Generators[ball.generators[i]].evaluate(ball.q[i]).point);
     bool nearTouch = false;
     const Box3 box = B.faces()[f].patch.boundingBox();
     for (const Vec3& p : touches)
@@ -631,11 +632,15 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
     bool inside = false;
     // A seam shorter than the trial step (between two branch points of an extruded
     // profile's MAT 1e-5 of the size apart, its touches on side pieces as narrow) is crossed
-    // past its end, its touches beyond the pieces they start on: shorter trials.
-    for (int shorter = 0; shorter < 3 && !inside; ++shorter)
+    // past its end, its touches running over piece after piece of one surface: shorter
+    // trials. (Only then: a triplet that does not leave a staircase's junction crosses grid
+    // squares, each a face of its own, and a shorter trial there is only slower.)
+    bool overPieces = true;
+    for (int shorter = 0; shorter < 3 && !inside && overPieces; ++shorter)
     {
       start = ball;
       direction = d;
+      overPieces = false;
       const double length = trial / std::pow(16.0, shorter);
       for (int attempt = 0; attempt < 4 && !inside; ++attempt)
       {
@@ -659,6 +664,10 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
         }
         if (std::count(swapped.generators.begin(), swapped.generators.end(), swapped.generators[leaving]) > 1)
           break;
+        const int from = start.generators[leaving], to = swapped.generators[leaving];
+        overPieces = attempt == 3 && from < static_cast<int>(B.faces().size()) &&
+          to < static_cast<int>(B.faces().size()) && B.faces()[from].entity >= 0 &&
+          B.faces()[from].entity == B.faces()[to].entity;
         start = swapped;
         const Eigen::VectorXd n = System.tangent(start);
         direction = n.segment<4>(6).dot(d.segment<4>(6)) < 0.0 ? Eigen::VectorXd(-n) : n;
