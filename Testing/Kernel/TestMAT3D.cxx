@@ -596,29 +596,47 @@ TEST(MAT3D, MovedStaircaseJunctionsArePolishedToTheInputsRounding)
   }
 }
 
+// The profile swept, given as the swept solid's faces and traced as a general solid: the
+// 2.5D MAT's junctions one for one (to `tolerance`), every point verified, the graph
+// consistent.
+void expectAgreesWithTheSweptSolidMAT(
+  const std::vector<NurbsCurve>& curves, const Sweep& how, const std::string& what, double tolerance = 1e-10)
+{
+  const Boundary2D profile = Boundary2D::build(curvePieces(curves));
+  const Generators generators(profile);
+  const MedialGraph graph = computeMAT2D(generators);
+  const SweepMap sweep(profile, how);
+  const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
+  Traced t;
+  try
+  {
+    t = trace(sweptSolidFaces(generators, graph, sweep));
+  }
+  catch (const InputError& e)
+  {
+    ADD_FAILURE() << what << ": " << e.what();
+    return;
+  }
+  int expected = 0;
+  for (const MedialElement& e : swept.elements)
+    if (e.type == MedialElementType::Junction)
+    {
+      ++expected;
+      const MedialPoint3D& p = swept.points[e.points.front()];
+      EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts, tolerance)) << what << ": " << p.x.transpose();
+    }
+  EXPECT_EQ(static_cast<int>(t.junctions().size()), expected) << what;
+  expectVerified(t, what);
+  EXPECT_TRUE(topologyProblems(t).empty()) << what;
+}
+
 // Cross-check with the 2.5D construction: a polygonal profile extruded, its faces as the
 // swept solid builds them (caps tiled by the profile MAT's chords: hundreds of coplanar
 // pieces), traced as a general solid. The junctions must be the 2.5D MAT's, one for one.
 TEST(MAT3D, ExtrudedPolygonsAgreeWithTheSweptSolidMAT)
 {
   for (const auto& [name, length] : { std::pair<std::string, double>{ "l-shape", 2.5 }, { "star", 2.0 }, { "rectangle", 3.0 } })
-  {
-    const Boundary2D profile = Boundary2D::build(curvePieces(makeShape(name).curves));
-    const Generators generators(profile);
-    const MedialGraph graph = computeMAT2D(generators);
-    const SweepMap sweep(profile, Sweep::extrusion(length));
-    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
-    std::vector<MedialPoint3D> expected;
-    for (const MedialElement& e : swept.elements)
-      if (e.type == MedialElementType::Junction)
-        expected.push_back(swept.points[e.points.front()]);
-    const Traced t = trace(sweptSolidFaces(generators, graph, sweep));
-    EXPECT_GT(t.boundary->countEdges(VertexKind::Reflex) + (name == "rectangle"), 0) << name;
-    EXPECT_EQ(t.junctions().size(), expected.size()) << name;
-    for (const MedialPoint3D& p : expected)
-      EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts)) << name << ": " << p.x.transpose();
-    expectVerified(t, name + " extruded");
-  }
+    expectAgreesWithTheSweptSolidMAT(makeShape(name).curves, Sweep::extrusion(length), name + " extruded");
 }
 
 // Random profile k of seed `seed` for the extrusion cross-check: a star polygon (even k) or
@@ -658,33 +676,8 @@ TEST(MAT3D, RandomExtrudedPolygonsAgreeWithTheSweptSolidMAT)
   {
     double length = 1.0;
     const RandomShape shape = randomExtrusionProfile(seed, k, length);
-    const std::string what = "extruded random polygon " + std::to_string(k) + " of seed " + std::to_string(seed);
-    const Boundary2D profile = Boundary2D::build(curvePieces(shape.curves));
-    const Generators generators(profile);
-    const MedialGraph graph = computeMAT2D(generators);
-    const SweepMap sweep(profile, Sweep::extrusion(length));
-    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
-    Traced t;
-    try
-    {
-      t = trace(sweptSolidFaces(generators, graph, sweep));
-    }
-    catch (const InputError& e)
-    {
-      ADD_FAILURE() << what << ": " << e.what();
-      continue;
-    }
-    int expected = 0;
-    for (const MedialElement& e : swept.elements)
-      if (e.type == MedialElementType::Junction)
-      {
-        ++expected;
-        const MedialPoint3D& p = swept.points[e.points.front()];
-        EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts, 1e-8)) << what << ": " << p.x.transpose();
-      }
-    EXPECT_EQ(static_cast<int>(t.junctions().size()), expected) << what;
-    expectVerified(t, what);
-    EXPECT_TRUE(topologyProblems(t).empty()) << what;
+    expectAgreesWithTheSweptSolidMAT(shape.curves, Sweep::extrusion(length),
+      "extruded random polygon " + std::to_string(k) + " of seed " + std::to_string(seed), 1e-8);
   }
 }
 
@@ -716,34 +709,8 @@ TEST(MAT3D, RevolvedPolygonsAgreeWithTheSweptSolidMAT)
       cases.push_back({ "random profile " + std::to_string(k) + " revolved", shape.curves, angle, axis });
   }
   for (const Case& c : cases)
-  {
-    const Boundary2D profile = Boundary2D::build(curvePieces(c.profile));
-    const Generators generators(profile);
-    const MedialGraph graph = computeMAT2D(generators);
-    const SweepMap sweep(profile, Sweep::revolution(c.angle, Vec3(-c.axis, 0.0, 0.0), Vec3::UnitY()));
-    const MedialComplex swept = computeMAT25D(generators, graph, sweep, {});
-    Traced t;
-    try
-    {
-      t = trace(sweptSolidFaces(generators, graph, sweep));
-    }
-    catch (const InputError& e)
-    {
-      ADD_FAILURE() << c.what << ": " << e.what();
-      continue;
-    }
-    int expected = 0;
-    for (const MedialElement& e : swept.elements)
-      if (e.type == MedialElementType::Junction)
-      {
-        ++expected;
-        const MedialPoint3D& p = swept.points[e.points.front()];
-        EXPECT_TRUE(hasJunction(t, p.x, p.radius, p.contacts, 1e-8)) << c.what << ": " << p.x.transpose();
-      }
-    EXPECT_EQ(static_cast<int>(t.junctions().size()), expected) << c.what;
-    expectVerified(t, c.what);
-    EXPECT_TRUE(topologyProblems(t).empty()) << c.what;
-  }
+    expectAgreesWithTheSweptSolidMAT(
+      c.profile, Sweep::revolution(c.angle, Vec3(-c.axis, 0.0, 0.0), Vec3::UnitY()), c.what, 1e-8);
 }
 
 // The thesis' fixed-step mode (constant step 1e-3 of the size, emptiness checked every 1e-2):
