@@ -105,8 +105,8 @@ private:
   bool outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
   void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
-  MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const;
-  void polishJunction(MedialBall3D& j) const;
+  MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h, bool& tangential) const;
+  void polishJunction(MedialBall3D& j, double reach = 0.0) const;
   std::string describe(const MedialBall3D& ball) const;
   void reportProgress();
   void collectSheets();
@@ -717,9 +717,11 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
 
 // A junction between `before` (empty) and the step h along t (not empty): bisection on the
 // step for the point where the nearest other face touches, then Newton on every face that
-// touches there.
-MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h) const
+// touches there. `tangential`: the fourth face came in tangentially (see below), and the
+// junction is located only to about the square root of the rounding.
+MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h, bool& tangential) const
 {
+  tangential = false;
   MedialBall3D end;
   step(before, t, h, end);
   // Faces touching both `before` (empty) and `end` keep touching along a degenerate seam
@@ -771,6 +773,20 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
   }
   MedialBall3D j = at;
   polishJunction(j);
+  // A face whose distance to the seam's balls has a double root at the junction (it meets
+  // the ball tangentially along the seam: a symmetric junction of eight faces on a revolved
+  // rectangle far from the origin) is bracketed by the bisection only to about the square
+  // root of the rounding of its gap, and its four-face system is singular there, so Newton
+  // does not sharpen it: such a face joins from within 1e-6 of the size, and the junction
+  // is known as loosely as a degenerate seam's end is.
+  if (j.size() < 4)
+  {
+    j = at;
+    polishJunction(j, 1e-6 * Size);
+    tangential = j.size() >= 4 && (j.x - at.x).norm() <= 1e-5 * Size;
+    if (!tangential)
+      j = at;
+  }
 #ifdef EXACTMAT_TRACE3D_DEBUG
   std::fprintf(stderr, "junction from %s: %s (bisected at lo %.3g of h %.3g)\n", describe(before).c_str(), describe(j).c_str(), lo, h);
   for (int i = 0; i < j.size(); ++i)
@@ -784,8 +800,10 @@ MedialBall3D Tracer::junction(const MedialBall3D& before, const Eigen::VectorXd&
 // Every face within reach of j joins it (or the reflex edge or corner where it is touched);
 // Newton on the k-generator system, repeated while another face turns out to touch the
 // polished ball.
-void Tracer::polishJunction(MedialBall3D& j) const
+void Tracer::polishJunction(MedialBall3D& j, double reach) const
 {
+  // (Faces within `reach` of the ball join; by default those touching it to 1e-10 of the size.)
+  reach = std::max(reach, 1e-10 * Size);
   for (int round = 0; round < 6; ++round)
   {
     bool added = false;
@@ -805,7 +823,7 @@ void Tracer::polishJunction(MedialBall3D& j) const
 #ifdef EXACTMAT_TRACE3D_DEBUG
       std::fprintf(stderr, "   candidate face %d foot (%.9g %.9g %.9g) d-r %.3g distinct %d tangent %d\n", f, foot.x(), foot.y(), foot.z(), footDistance - j.r, (int)distinct, (int)tangent);
 #endif
-      if (!distinct || footDistance > j.r + 1e-10 * Size)
+      if (!distinct || footDistance > j.r + reach)
         continue;
       // Touching at a reflex edge or corner of the face: that entity joins instead.
       const int g = tangent ? f : reflexEntityAt(f, foot);
@@ -894,21 +912,22 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   size_t lastChecked = 0;           // fixed mode: the last seam ball known empty
   // A ball found not empty: the junction lies in the step before the first seam ball since
   // the last check that is not empty (fixed mode), else in the step from `before` by h.
-  // The balls past it are dropped.
+  // The balls past it are dropped. `tangential` as for junction().
+  bool tangential = false;
   auto junctionSinceCheck = [&](const MedialBall3D& before, const Eigen::VectorXd& t, double h) {
     size_t first = seam.balls.size();
     for (size_t i = std::max<size_t>(lastChecked + 1, 1); i < seam.balls.size() && first == seam.balls.size(); ++i)
       if (!empty(seam.balls[i]))
         first = i;
     if (first == seam.balls.size())
-      return junction(before, t, h);
+      return junction(before, t, h, tangential);
     const MedialBall3D from = seam.balls[first - 1];
     Eigen::VectorXd direction = System.tangent(from);
     const Vec3 ahead = seam.balls[first].x - from.x;
     if (direction.segment<3>(6).dot(ahead) < 0.0)
       direction = -direction;
     seam.balls.resize(first);
-    return junction(from, direction, ahead.norm());
+    return junction(from, direction, ahead.norm(), tangential);
   };
   Eigen::VectorXd previous = tangent;
   int endNode = -1;
@@ -1010,7 +1029,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         const MedialBall3D j = touching.size() > 3 ? touching : junctionSinceCheck(ball, t, lo);
         // Along a degenerate seam the ball's place is not pinned by its own equations: the
         // junction is known only as well as the contact count locates it.
-        const bool loose = seam.touchpoints > 3;
+        const bool loose = seam.touchpoints > 3 || tangential;
         const size_t known = Result.nodes.size();
         endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
         if (loose && Result.nodes.size() > known)
@@ -1091,7 +1110,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     {
       const MedialBall3D j = junctionSinceCheck(ball, t, h);
       // (As at a crossing: a degenerate seam's junction is located loosely.)
-      const bool loose = seam.touchpoints > 3;
+      const bool loose = seam.touchpoints > 3 || tangential;
       const size_t known = Result.nodes.size();
       endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
       if (loose && Result.nodes.size() > known)

@@ -21,6 +21,7 @@ public:
   std::vector<Contact> touchpoints(const Vec3& x, double radius) const override;
   double size() const override { return Size; }
   double aspect() const override { return Aspect; }
+  double inputRounding() const override { return Boundary->userFrame().inputRounding(); }
 
 protected:
   Vec3 nearestPoint(const Vec3& x) const override;

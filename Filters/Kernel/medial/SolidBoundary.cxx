@@ -49,7 +49,12 @@ std::vector<SolidBoundary::Contact> SolidBoundary::distinctContacts(
     // Plus the rounding of the distances themselves, differences of coordinates of x's
     // magnitude: a ball 4e-7 across near the origin's unit has two feet either side of a
     // smooth junction 4e-12 apart, the valley between them "outside" by 1e-16.
-    const double valley = minima.front().distance + 1e-12 * scale + 1e-15 * x.norm();
+    // And the input's own rounding: coplanar pieces of a cap far from the origin are each
+    // tilted by it, and a touch near the edge between two has a foot on each, 1e-7 of the
+    // size apart, the boundary between them "outside" by 1e-13 (an extruded L moved 4e4 ×
+    // its size and turned: a seam point counted 4 touchpoints for 3).
+    const double valley =
+      minima.front().distance + 1e-12 * scale + 1e-15 * x.norm() + 64.0 * inputRounding() * size();
     for (const Contact& q : out)
       keep = keep && !sameContact(x, valley, q.point, m.point, merge);
     if (keep)

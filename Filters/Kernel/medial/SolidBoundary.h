@@ -36,6 +36,10 @@ public:
   virtual double size() const = 0;
   /// The bounding box's longest edge over its shortest.
   virtual double aspect() const { return 1.0; }
+  /// What the boundary's coordinates are known to, as a fraction of the size: the rounding
+  /// of the input's coordinates in the frame it was given in (Normalisation::inputRounding;
+  /// a part far from the origin has its faces' corners rounded off their planes by that).
+  virtual double inputRounding() const { return 0.0; }
 
 protected:
   /// A local minimum found on one face; `oneSided` when it lies on the face's border.
