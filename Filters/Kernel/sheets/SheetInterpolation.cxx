@@ -3,6 +3,7 @@
 #include "common/InputError.h"
 #include "geometry/ClosestPoint.h"
 #include "geometry/DomainTriangulation.h"
+#include "geometry/PatchContinuation.h"
 #include "mat3d/PatchBoundary.h"
 
 #include <Eigen/Dense>
@@ -28,24 +29,70 @@ double MedialSheetMesh::area() const
 namespace
 {
 
-/// One side of a sheet's pair: a generator, or planar faces in one plane joined by smooth
-/// edges (a polygon split into a fan of triangles), which a ball touches as one face.
+/// One side of a sheet's pair: a generator, or faces of one surface joined by smooth
+/// edges — planar faces in one plane (a polygon split into a fan of triangles), or curved
+/// pieces of one Bézier surface (a surface of revolution cut where MAT samples touch) —
+/// which a ball touches as one face. Parameters are the first member's: its plane's
+/// coordinates, or its patch's polynomial extension, which every other piece is an affine
+/// part of (PieceMaps take a piece's parameters there) — scaled there by the patch's speeds
+/// at its centre, so a sheet's domain is not stretched 20-fold across the sliver pieces of
+/// a surface of revolution (triangles shaped well in such a domain are needles on the
+/// sheet: refinement without end, and an area a lantern of needles overstates).
 class SheetSide
 {
 public:
-  SheetSide(const std::vector<Generator3D>& generators, const std::vector<int>& members)
+  SheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, const std::vector<int>& members)
   {
     for (int g : members)
       Members.push_back(&generators[g]);
+    if (Members.size() > 1 && first().kind() == GeneratorKind3D::Face && !first().planar())
+    {
+      const BezierPatch& surface = boundary.faces()[first().entity()].patch;
+      const double tolerance =
+        std::max(1e-10, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
+      const SurfaceDerivatives d = surface.derivatives(0.5, 0.5);
+      Speed = Vec2(d.su.norm(), d.sv.norm());
+      if (!(Speed.minCoeff() > 0.0))
+        Speed = Vec2(1.0, 1.0);
+      for (const Generator3D* m : Members)
+      {
+        PieceMaps.emplace_back();
+        if (!pieceOfSurface(surface, boundary.faces()[m->entity()].patch, tolerance, PieceMaps.back()))
+          fail("3D MAT sheets: ", m->name(), " is not a piece of the surface of ", first().name());
+      }
+    }
   }
   const Generator3D& first() const { return *Members.front(); }
   const std::vector<const Generator3D*>& members() const { return Members; }
   GeneratorKind3D kind() const { return first().kind(); }
-  Touch3D evaluate(const Vec2& q) const { return first().evaluate(q); }
-  Vec2 parameterOf(const Vec3& x) const { return first().parameterOf(x); }
+  Touch3D evaluate(const Vec2& q) const
+  {
+    Touch3D t = first().evaluate(q.cwiseQuotient(Speed));
+    for (int k = 0; k < 2; ++k)
+    {
+      t.dPoint.col(k) /= Speed(k);
+      t.dNormal.col(k) /= Speed(k);
+    }
+    return t;
+  }
+  Vec2 parameterOf(const Vec3& x) const
+  {
+    if (PieceMaps.empty())
+      return first().parameterOf(x);
+    // On the nearest piece, in the surface's parameters.
+    size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < Members.size(); ++k)
+      if (const double d = Members[k]->distance(x); d < best)
+      {
+        best = d;
+        nearest = k;
+      }
+    return PieceMaps[nearest](Members[nearest]->parameterOf(x)).cwiseProduct(Speed);
+  }
   Vec2 touchParameter(const Vec3& foot, const Vec3& centre) const
   {
-    return Members.size() == 1 ? first().touchParameter(foot, centre) : first().parameterOf(foot);
+    return Members.size() == 1 ? first().touchParameter(foot, centre) : parameterOf(foot);
   }
   Vec3 nearestPoint(const Vec3& x) const
   {
@@ -70,6 +117,13 @@ public:
   {
     if (Members.size() == 1)
       return first().exitSide(q, tolerance);
+    if (!PieceMaps.empty())
+    {
+      for (size_t k = 0; k < Members.size(); ++k)
+        if (Members[k]->exitSide(PieceMaps[k].inverse(q.cwiseQuotient(Speed)), tolerance) < 0)
+          return -1;
+      return 0;
+    }
     const Vec3 x = first().evaluate(q).point;
     for (const Generator3D* m : Members)
       if (m->exitSide(m->parameterOf(x), tolerance) < 0)
@@ -80,12 +134,15 @@ public:
   {
     std::string out = first().name();
     if (Members.size() > 1)
-      out += " (with " + std::to_string(Members.size() - 1) + " coplanar face(s) across smooth edges)";
+      out += " (with " + std::to_string(Members.size() - 1) +
+        (PieceMaps.empty() ? " coplanar face(s)" : " other piece(s) of its surface") + " across smooth edges)";
     return out;
   }
 
 private:
   std::vector<const Generator3D*> Members;
+  std::vector<ParameterMap> PieceMaps; ///< curved members only: each piece's parameters → the first's
+  Vec2 Speed = Vec2(1.0, 1.0);         ///< the side's parameters over the first's (curved members)
 };
 
 class SheetBuilder
@@ -97,7 +154,7 @@ public:
     : B(boundary)
     , Options(options)
     , Size(boundary.diagonal())
-    , Side{ { SheetSide(generators, a), SheetSide(generators, b) } }
+    , Side{ { SheetSide(boundary, generators, a), SheetSide(boundary, generators, b) } }
   {
     Mesh.generators = { { a.front(), b.front() } };
     Mesh.members = { { a, b } };
@@ -1138,18 +1195,26 @@ private:
 std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g)
 {
   std::vector<int> members{ g };
-  if (generators[g].kind() != GeneratorKind3D::Face || !generators[g].planar())
+  if (generators[g].kind() != GeneratorKind3D::Face)
     return members;
+  const bool planar = generators[g].planar();
   const double tolerance = 1e-9 * boundary.diagonal();
-  // Faces reached through smooth edges, in the first face's plane.
+  const double piece = std::max(1e-10, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
+  const BezierPatch& surface = boundary.faces()[generators[g].entity()].patch;
+  // Faces reached through smooth edges: in g's plane, or pieces of g's surface.
+  auto joins = [&](int other) {
+    if (planar)
+      return generators[other].planar() && generators[g].coplanar(generators[other], tolerance);
+    ParameterMap map;
+    return !generators[other].planar() && pieceOfSurface(surface, boundary.faces()[generators[other].entity()].patch, piece, map);
+  };
   for (size_t k = 0; k < members.size(); ++k)
     for (const Edge3D& e : boundary.edges())
     {
       if (e.kind != VertexKind::Smooth || (e.faceA != members[k] && e.faceB != members[k]))
         continue;
       const int other = e.faceA == members[k] ? e.faceB : e.faceA;
-      if (std::find(members.begin(), members.end(), other) == members.end() && generators[other].planar() &&
-        generators[g].coplanar(generators[other], tolerance))
+      if (std::find(members.begin(), members.end(), other) == members.end() && joins(other))
         members.push_back(other);
     }
   std::sort(members.begin(), members.end());
@@ -1199,10 +1264,23 @@ std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vecto
 {
   std::map<std::pair<std::vector<int>, std::vector<int>>, int> index;
   std::vector<SheetGroup> out;
+  // (Each generator's side once: a revolved solid's pieces are many, each in many pairs.)
+  std::map<int, std::vector<int>> sides;
+  auto sideOf = [&](int g) -> const std::vector<int>& {
+    auto it = sides.find(g);
+    if (it == sides.end())
+    {
+      const std::vector<int> side = sheetSide(boundary, generators, g);
+      for (int m : side)
+        sides[m] = side;
+      it = sides.find(g);
+    }
+    return it->second;
+  };
   for (size_t s = 0; s < pairs.size(); ++s)
   {
-    std::vector<int> a = sheetSide(boundary, generators, pairs[s][0]);
-    std::vector<int> b = sheetSide(boundary, generators, pairs[s][1]);
+    std::vector<int> a = sideOf(pairs[s][0]);
+    std::vector<int> b = sideOf(pairs[s][1]);
     if (b < a)
       std::swap(a, b);
     // Two faces of one coplanar group (a degenerate ball on the smooth edge between them,
@@ -1221,8 +1299,8 @@ std::vector<SheetGroup> groupSheets(const Boundary3D& boundary, const std::vecto
   {
     if (edge.kind != VertexKind::Convex)
       continue;
-    std::vector<int> a = sheetSide(boundary, generators, edge.faceA);
-    std::vector<int> b = sheetSide(boundary, generators, edge.faceB);
+    std::vector<int> a = sideOf(edge.faceA);
+    std::vector<int> b = sideOf(edge.faceB);
     if (b < a)
       std::swap(a, b);
     if (a != b && index.insert({ { a, b }, static_cast<int>(out.size()) }).second)

@@ -85,8 +85,10 @@ struct MedialSheetMesh
 };
 
 /// One side of a sheet's pair as generator indices (medialGenerators' numbering): g
-/// itself, or — for a planar face — every face in its plane reached through smooth edges
-/// (a polygon split into a fan of triangles is one face to the sheets), sorted.
+/// itself, or every face reached through smooth edges that is in g's plane (a polygon
+/// split into a fan of triangles) or, for a curved face, a piece of g's surface (a surface
+/// of revolution cut where MAT samples touch: PatchContinuation) — one face to the sheets —
+/// sorted.
 std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g);
 
 /// Traced sheets (generator pairs) that are one sheet: the same two sides. Groups with no
