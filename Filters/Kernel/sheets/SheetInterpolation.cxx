@@ -637,7 +637,15 @@ private:
               loop.push_back(corner);
               ++Mesh.gapVertices;
             }
-          appendGap(loop, target);
+          // Ends on one side: the border follows it (a curved side — a revolved profile's
+          // reflex edge, an arc — is not a straight line in P's parameters).
+          std::pair<int, int> along{ -1, -1 };
+          if (bestShares)
+            for (const auto& side : endSides)
+              if (side.first >= 0 && std::find(bestSides.begin(), bestSides.end(), side) != bestSides.end() &&
+                curvedSide(side))
+                along = side;
+          appendGap(loop, target, along);
           if (next < 0)
           {
             closed = true;
@@ -1042,21 +1050,87 @@ private:
     split(m, b, depth + 1, out);
   }
 
-  // Border points along the straight line in P's parameters from the loop's end to
-  // `target` (exclusive at both ends), spaced by maxEdge in space.
-  void appendGap(std::vector<SheetVertex>& loop, const SheetVertex& target)
+  // Whether a face side (face, patch side) bends away from its chord.
+  bool curvedSide(const std::pair<int, int>& side) const
+  {
+    const BezierCurve curve = B.faces()[side.first].patch.side(side.second);
+    const Vec3 a = curve.startPoint(), d = curve.endPoint() - a;
+    for (int i = 1; i < curve.degree(); ++i)
+    {
+      const Vec3 w = curve.controlPoint(i) - a;
+      if ((d.squaredNorm() > 0.0 ? (w - d * (w.dot(d) / d.squaredNorm())).norm() : w.norm()) > Touch)
+        return true;
+    }
+    return false;
+  }
+
+  // Border points from the loop's end to `target` (exclusive at both ends), spaced by
+  // maxEdge in space: along the straight line in P's parameters, or along the face side
+  // `along` (a curved side both ends touch: its points' preimages in P's parameters).
+  void appendGap(std::vector<SheetVertex>& loop, const SheetVertex& target, const std::pair<int, int>& along = { -1, -1 })
   {
     const SheetVertex from = loop.back();
     const double length = (target.x - from.x).norm();
-    const int n = std::min(10000, static_cast<int>(std::ceil(length / (Options.maxEdge * Size))));
-    for (int k = 1; k < n; ++k)
+    // The side's owner (P or O) and the ends' parameters on it.
+    int owner = -1;
+    BezierCurve curve;
+    double t0 = 0.0, t1 = 0.0;
+    if (along.first >= 0)
     {
-      const double s = static_cast<double>(k) / n;
+      curve = B.faces()[along.first].patch.side(along.second);
+      for (int g : { P, O })
+        for (const Generator3D* m : Side[g].members())
+          if (owner < 0 && m->kind() == GeneratorKind3D::Face && m->entity() == along.first)
+            owner = g;
+      if (owner >= 0)
+      {
+        t0 = closestPoint(curve, from.touch[owner]).t;
+        t1 = closestPoint(curve, target.touch[owner]).t;
+      }
+    }
+    // The fractions of the way: evenly by maxEdge, or along the curved side until its
+    // chords are within the tolerance (the sheets either side of that border each follow it).
+    std::vector<double> fractions;
+    if (owner < 0)
+    {
+      const int n = std::min(10000, static_cast<int>(std::ceil(length / (Options.maxEdge * Size))));
+      for (int k = 1; k < n; ++k)
+        fractions.push_back(static_cast<double>(k) / n);
+    }
+    else
+    {
+      auto at = [&](double f) { return curve.evaluate((1.0 - f) * t0 + f * t1); };
+      std::vector<std::pair<double, double>> todo{ { 0.0, 1.0 } };
+      for (int guard = 0; !todo.empty() && guard < 20000; ++guard)
+      {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        const Vec3 pa = at(a), pb = at(b), pm = at(0.5 * (a + b));
+        if (b - a > 1e-6 &&
+          ((pb - pa).norm() > Options.maxEdge * Size || (pm - 0.5 * (pa + pb)).norm() > Options.tolerance * Size))
+        {
+          todo.push_back({ 0.5 * (a + b), b });
+          todo.push_back({ a, 0.5 * (a + b) });
+        }
+        else if (b < 1.0)
+          fractions.push_back(b);
+      }
+    }
+    for (const double s : fractions)
+    {
       // Guesses for the touch on O: the last gap point's (continuation), the straight
       // interpolation of the two ends', and the other end's where one end has radius 0
       // (a reflex edge's angle or a corner's normal means nothing there).
-      const Vec2 qp = (1.0 - s) * from.domain + s * target.domain;
+      Vec2 qp = (1.0 - s) * from.domain + s * target.domain;
       const double r = (1.0 - s) * from.r + s * target.r;
+      if (owner >= 0)
+      {
+        // (Projected domains have no P: only straight gaps there.)
+        const Vec3 e = curve.evaluate((1.0 - s) * t0 + s * t1);
+        SheetVertex near = loop.back();
+        if (Projected || (owner == P ? (qp = Side[P].parameterOf(e), false) : !preimage(e, near, qp)))
+          qp = (1.0 - s) * from.domain + s * target.domain;
+      }
       // (A sheet between two reflex entities is solved for both touches: P's is guessed
       // alike, and at radius 0 its angle too means nothing.)
       const SheetVertex& wide = from.r >= target.r ? from : target;
