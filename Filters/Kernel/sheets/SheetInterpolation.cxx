@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -988,7 +989,7 @@ private:
   }
 
   // P's parameters of the ball that touches O as `to` says (point and normal).
-  bool preimageOf(const Touch3D& to, const SheetVertex& near, Vec2& qp) const
+  bool preimageOf(const Touch3D& to, const SheetVertex& near, Vec2& qp, double* radius = nullptr) const
   {
     qp = near.q[P];
     double r = near.r;
@@ -997,7 +998,11 @@ private:
       const Touch3D tp = Side[P].evaluate(qp);
       const Vec3 f = tp.point + r * tp.normal - to.point - r * to.normal;
       if (f.norm() <= slack(1e-13, 16.0))
+      {
+        if (radius)
+          *radius = r;
         return true;
+      }
       Eigen::Matrix3d j;
       j.col(0) = tp.dPoint.col(0) + r * tp.dNormal.col(0);
       j.col(1) = tp.dPoint.col(1) + r * tp.dNormal.col(1);
@@ -1064,19 +1069,35 @@ private:
     return false;
   }
 
+  // Whether O is a reflex edge that bends away from its chord (a revolved profile's corner).
+  bool curvedEdge() const
+  {
+    const Generator3D& e = Side[O].first();
+    const std::vector<int>& f = e.faces();
+    if (f.empty())
+      return false;
+    const Edge3D& edge = B.edges()[e.entity()];
+    return curvedSide({ edge.faceA, edge.sideA });
+  }
+
   // Border points from the loop's end to `target` (exclusive at both ends), spaced by
-  // maxEdge in space: along the straight line in P's parameters, or along the face side
-  // `along` (a curved side both ends touch: its points' preimages in P's parameters).
+  // maxEdge in space: along the straight line in P's parameters, or along a curved side both
+  // ends lie on — the face side `along`, or a side of O's reflex edge when that edge is
+  // curved (its normal arc's ends θ = 0, α and its ends t = 0, 1: straight in the edge's
+  // parameters, curves in P's) — through its points' preimages in P's parameters, sampled
+  // until their chords are within the tolerance.
   void appendGap(std::vector<SheetVertex>& loop, const SheetVertex& target, const std::pair<int, int>& along = { -1, -1 })
   {
     const SheetVertex from = loop.back();
     const double length = (target.x - from.x).norm();
-    // The side's owner (P or O) and the ends' parameters on it.
-    int owner = -1;
+    // guide(f, near): P's parameters of the border at the fraction f of the way (Newton from
+    // the border point `near`), and the point whose chords measure the sampling (the touch on
+    // the side, or the ball's centre).
+    std::function<bool(double, const SheetVertex&, Vec2&, Vec3&)> guide;
     BezierCurve curve;
-    double t0 = 0.0, t1 = 0.0;
-    if (along.first >= 0)
+    if (along.first >= 0 && !Projected)
     {
+      int owner = -1;
       curve = B.faces()[along.first].patch.side(along.second);
       for (int g : { P, O })
         for (const Generator3D* m : Side[g].members())
@@ -1084,53 +1105,115 @@ private:
             owner = g;
       if (owner >= 0)
       {
-        t0 = closestPoint(curve, from.touch[owner]).t;
-        t1 = closestPoint(curve, target.touch[owner]).t;
+        const double t0 = closestPoint(curve, from.touch[owner]).t, t1 = closestPoint(curve, target.touch[owner]).t;
+        guide = [this, &curve, owner, t0, t1](double f, const SheetVertex& near, Vec2& qp, Vec3& at) {
+          at = curve.evaluate((1.0 - f) * t0 + f * t1);
+          if (owner == P)
+          {
+            qp = Side[P].parameterOf(at);
+            return true;
+          }
+          return preimage(at, near, qp);
+        };
       }
     }
-    // The fractions of the way: evenly by maxEdge, or along the curved side until its
-    // chords are within the tolerance (the sheets either side of that border each follow it).
+    if (!guide && !Projected && Side[O].kind() == GeneratorKind3D::ReflexEdge && Side[O].members().size() == 1 &&
+      curvedEdge())
+    {
+      const Generator3D& e = Side[O].first();
+      const Vec2 a = from.q[O], b = target.q[O];
+      const double near = slack(1e-7, 1e4) / Size;
+      auto on = [&](const Vec2& q, int side) {
+        const double value[4] = { q.y(), q.y() - e.edgeAngle(q.x()), q.x(), q.x() - 1.0 };
+        return std::abs(value[side]) <= near;
+      };
+      for (int side = 0; side < 4 && !guide; ++side)
+        if (on(a, side) && on(b, side))
+          guide = [this, &e, side, a, b](double f, const SheetVertex& near, Vec2& qp, Vec3& at) {
+            Vec2 q = (1.0 - f) * a + f * b;
+            if (side == 0)
+              q.y() = 0.0;
+            else if (side == 1)
+              q.y() = e.edgeAngle(q.x());
+            else
+              q.x() = side == 2 ? 0.0 : 1.0;
+            const Touch3D to = Side[O].evaluate(q);
+            double r = near.r;
+            if (!preimageOf(to, near, qp, &r))
+              return false;
+            at = to.point + r * to.normal;
+            return true;
+          };
+    }
+    // The fractions of the way: evenly by maxEdge, or by halving where the guide's chords
+    // are longer than maxEdge or off it by more than the tolerance.
     std::vector<double> fractions;
-    if (owner < 0)
+    std::vector<Vec2> guided;
+    if (guide)
+    {
+      std::map<double, std::pair<Vec2, Vec3>> known;
+      auto sample = [&](double f) -> const std::pair<Vec2, Vec3>* {
+        auto it = known.find(f);
+        if (it == known.end())
+        {
+          // Newton from the nearest point known (the start, at first).
+          SheetVertex near = from;
+          double gap = f;
+          for (const auto& [g, p] : known)
+            if (std::abs(g - f) < gap)
+            {
+              gap = std::abs(g - f);
+              near.q[P] = p.first;
+            }
+          std::pair<Vec2, Vec3> g;
+          if (!guide(f, near, g.first, g.second))
+            return nullptr;
+          it = known.emplace(f, g).first;
+        }
+        return &it->second;
+      };
+      std::vector<std::pair<double, double>> todo{ { 0.0, 1.0 } };
+      bool ok = true;
+      for (int guard = 0; !todo.empty() && guard < 20000 && ok; ++guard)
+      {
+        const auto [a, b] = todo.back();
+        todo.pop_back();
+        const auto *pa = sample(a), *pb = sample(b), *pm = sample(0.5 * (a + b));
+        ok = pa && pb && pm;
+        if (ok && b - a > 1e-6 &&
+          ((pb->second - pa->second).norm() > Options.maxEdge * Size ||
+            (pm->second - 0.5 * (pa->second + pb->second)).norm() > Options.tolerance * Size))
+        {
+          todo.push_back({ 0.5 * (a + b), b });
+          todo.push_back({ a, 0.5 * (a + b) });
+        }
+        else if (ok && b < 1.0)
+        {
+          fractions.push_back(b);
+          guided.push_back(pb->first);
+        }
+      }
+      if (!ok)
+      {
+        fractions.clear();
+        guided.clear();
+        guide = nullptr;
+      }
+    }
+    if (!guide)
     {
       const int n = std::min(10000, static_cast<int>(std::ceil(length / (Options.maxEdge * Size))));
       for (int k = 1; k < n; ++k)
         fractions.push_back(static_cast<double>(k) / n);
     }
-    else
+    for (size_t k = 0; k < fractions.size(); ++k)
     {
-      auto at = [&](double f) { return curve.evaluate((1.0 - f) * t0 + f * t1); };
-      std::vector<std::pair<double, double>> todo{ { 0.0, 1.0 } };
-      for (int guard = 0; !todo.empty() && guard < 20000; ++guard)
-      {
-        const auto [a, b] = todo.back();
-        todo.pop_back();
-        const Vec3 pa = at(a), pb = at(b), pm = at(0.5 * (a + b));
-        if (b - a > 1e-6 &&
-          ((pb - pa).norm() > Options.maxEdge * Size || (pm - 0.5 * (pa + pb)).norm() > Options.tolerance * Size))
-        {
-          todo.push_back({ 0.5 * (a + b), b });
-          todo.push_back({ a, 0.5 * (a + b) });
-        }
-        else if (b < 1.0)
-          fractions.push_back(b);
-      }
-    }
-    for (const double s : fractions)
-    {
+      const double s = fractions[k];
       // Guesses for the touch on O: the last gap point's (continuation), the straight
       // interpolation of the two ends', and the other end's where one end has radius 0
       // (a reflex edge's angle or a corner's normal means nothing there).
-      Vec2 qp = (1.0 - s) * from.domain + s * target.domain;
+      const Vec2 qp = guide ? guided[k] : Vec2((1.0 - s) * from.domain + s * target.domain);
       const double r = (1.0 - s) * from.r + s * target.r;
-      if (owner >= 0)
-      {
-        // (Projected domains have no P: only straight gaps there.)
-        const Vec3 e = curve.evaluate((1.0 - s) * t0 + s * t1);
-        SheetVertex near = loop.back();
-        if (Projected || (owner == P ? (qp = Side[P].parameterOf(e), false) : !preimage(e, near, qp)))
-          qp = (1.0 - s) * from.domain + s * target.domain;
-      }
       // (A sheet between two reflex entities is solved for both touches: P's is guessed
       // alike, and at radius 0 its angle too means nothing.)
       const SheetVertex& wide = from.r >= target.r ? from : target;
