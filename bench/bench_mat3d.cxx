@@ -445,6 +445,12 @@ int main(int argc, char** argv)
   sheetRow("L prism (a reflex edge)", lPrism(1.0, 2.5), repeats);
   sheetRow("notched cube (reflex corner)", patchPieces(makeShape("notched-cube").surfaces), repeats);
   sheetRow("stepped block (rims)", patchPieces(makeShape("stepped-block").surfaces), repeats);
+  // Revolved solids through the 3D tracer: curved sides cut into sliver pieces (one side of
+  // a sheet per surface), arcs of reflex edges.
+  for (const auto& [profile, degrees] : { std::pair<std::string, double>{ "rectangle", 90.0 }, { "l-shape", 90.0 },
+         { "l-shape", 270.0 } })
+    sheetRow(profile + " revolved " + std::to_string(static_cast<int>(degrees)) + " degrees",
+      sweptCatalogueSolid(profile, Sweep::revolution(degrees, Vec3(-3.0, 0.0, 0.0), Vec3::UnitY())), quick ? 1 : 3);
   std::mt19937 sheetRng(5);
   for (int n : { 10, 30, 100 })
     sheetRow("random frustum, " + std::to_string(n) + "-gon", randomFrustum(sheetRng, n), quick ? 1 : 3);

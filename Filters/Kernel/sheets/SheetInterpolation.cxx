@@ -46,6 +46,8 @@ public:
   {
     for (int g : members)
       Members.push_back(&generators[g]);
+    for (const Generator3D* m : Members)
+      Boxes.push_back(m->kind() == GeneratorKind3D::Face ? boundary.faces()[m->entity()].patch.boundingBox() : Box3());
     if (Members.size() > 1 && first().kind() == GeneratorKind3D::Face && !first().planar())
     {
       const BezierPatch& surface = boundary.faces()[first().entity()].patch;
@@ -81,14 +83,8 @@ public:
     if (PieceMaps.empty())
       return first().parameterOf(x);
     // On the nearest piece, in the surface's parameters.
-    size_t nearest = 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t k = 0; k < Members.size(); ++k)
-      if (const double d = Members[k]->distance(x); d < best)
-      {
-        best = d;
-        nearest = k;
-      }
+    double d = 0.0;
+    const size_t nearest = nearestMember(x, d);
     return PieceMaps[nearest](Members[nearest]->parameterOf(x)).cwiseProduct(Speed);
   }
   Vec2 touchParameter(const Vec3& foot, const Vec3& centre) const
@@ -97,20 +93,13 @@ public:
   }
   Vec3 nearestPoint(const Vec3& x) const
   {
-    Vec3 best = first().nearestPoint(x);
-    for (size_t k = 1; k < Members.size(); ++k)
-    {
-      const Vec3 p = Members[k]->nearestPoint(x);
-      if ((p - x).norm() < (best - x).norm())
-        best = p;
-    }
-    return best;
+    double d = 0.0;
+    return Members[nearestMember(x, d)]->nearestPoint(x);
   }
   double distance(const Vec3& x) const
   {
-    double d = first().distance(x);
-    for (size_t k = 1; k < Members.size(); ++k)
-      d = std::min(d, Members[k]->distance(x));
+    double d = 0.0;
+    nearestMember(x, d);
     return d;
   }
   /// −1 when the touch at q lies on one of the members (within `tolerance`), else ≥ 0.
@@ -125,9 +114,12 @@ public:
           return -1;
       return 0;
     }
+    // (Only members whose box x is within reach of: a face bounded by arcs decides by a
+    // closest-point search, and a revolved profile's annuli are cut into a hundred pieces.)
     const Vec3 x = first().evaluate(q).point;
-    for (const Generator3D* m : Members)
-      if (m->exitSide(m->parameterOf(x), tolerance) < 0)
+    for (size_t k = 0; k < Members.size(); ++k)
+      if ((Members[k]->kind() != GeneratorKind3D::Face || distanceToBox(Boxes[k], x) <= tolerance) &&
+        Members[k]->exitSide(Members[k]->parameterOf(x), tolerance) < 0)
         return -1;
     return 0;
   }
@@ -141,7 +133,37 @@ public:
   }
 
 private:
+  /// The member nearest x and its distance d: members in the order of their boxes'
+  /// distance, searched only while a box is nearer than the nearest found (the sliver pieces
+  /// of a surface of revolution are dozens; a patch's nearest point is a Bernstein search).
+  size_t nearestMember(const Vec3& x, double& d) const
+  {
+    if (Members.size() == 1)
+    {
+      d = first().distance(x);
+      return 0;
+    }
+    std::vector<std::pair<double, size_t>> order;
+    for (size_t k = 0; k < Members.size(); ++k)
+      order.emplace_back(Members[k]->kind() == GeneratorKind3D::Face ? distanceToBox(Boxes[k], x) : 0.0, k);
+    std::sort(order.begin(), order.end());
+    size_t best = order.front().second;
+    d = std::numeric_limits<double>::infinity();
+    for (const auto& [boxDistance, k] : order)
+    {
+      if (boxDistance > d)
+        break;
+      if (const double dk = Members[k]->distance(x); dk < d)
+      {
+        d = dk;
+        best = k;
+      }
+    }
+    return best;
+  }
+
   std::vector<const Generator3D*> Members;
+  std::vector<Box3> Boxes;             ///< each face member's patch box (empty otherwise)
   std::vector<ParameterMap> PieceMaps; ///< curved members only: each piece's parameters → the first's
   Vec2 Speed = Vec2(1.0, 1.0);         ///< the side's parameters over the first's (curved members)
 };
@@ -631,7 +653,31 @@ private:
 #endif
           // Ends on different sides: the border turns where those sides meet (or along a
           // third side between them).
+          // Ends on two curved sides of one side's faces that a chain of its border sides
+          // joins end to end (a revolved profile's reflex edge is an arc per quarter turn):
+          // the border follows the chain, through the points where its sides meet.
+          std::vector<std::pair<int, int>> chain;
           if (!bestShares)
+            chain = curvedSideChain(endSides, bestSides);
+          if (!chain.empty())
+            for (size_t k = 0; k + 1 < chain.size(); ++k)
+            {
+              SheetVertex corner;
+              if (!sideJoint(chain[k], chain[k + 1], loop.back(), corner))
+                fail("3D MAT sheets: the border of ", name(), " cannot turn where two sides of ", Side[P].name(),
+                  " or ", Side[O].name(), " meet");
+              appendGap(loop, corner, chain[k]);
+              loop.push_back(corner);
+              ++Mesh.gapVertices;
+            }
+          else if (std::vector<SheetVertex> around; !bestShares && aroundCurvedEdge(loop.back(), target, around))
+            for (const SheetVertex& corner : around)
+            {
+              appendGap(loop, corner);
+              loop.push_back(corner);
+              ++Mesh.gapVertices;
+            }
+          else if (!bestShares)
             for (const SheetVertex& corner : cornersBetween(loop.back(), endSides, target, bestSides))
             {
               appendGap(loop, corner);
@@ -641,7 +687,9 @@ private:
           // Ends on one side: the border follows it (a curved side — a revolved profile's
           // reflex edge, an arc — is not a straight line in P's parameters).
           std::pair<int, int> along{ -1, -1 };
-          if (bestShares)
+          if (!chain.empty())
+            along = chain.back();
+          else if (bestShares)
             for (const auto& side : endSides)
               if (side.first >= 0 && std::find(bestSides.begin(), bestSides.end(), side) != bestSides.end() &&
                 curvedSide(side))
@@ -1055,6 +1103,162 @@ private:
     split(m, b, depth + 1, out);
   }
 
+  // Two ends on sides of O's curved reflex edge: its parameter domain 0 ≤ θ ≤ α(t),
+  // 0 ≤ t ≤ 1 is a quadrilateral, and the border runs round it one way or the other, turning
+  // at its corners — the way whose legs' middles are balls of the MAT (the sides' preimages
+  // are curves in P's parameters, so their chords cannot tell). The corners on that way.
+  bool aroundCurvedEdge(const SheetVertex& from, const SheetVertex& to, std::vector<SheetVertex>& corners) const
+  {
+    if (Projected || !Options.exact || Side[O].kind() != GeneratorKind3D::ReflexEdge || Side[O].members().size() != 1 ||
+      !curvedEdge())
+      return false;
+    const Generator3D& e = Side[O].first();
+    // Corners counter-clockwise (t, θ): (0,0), (1,0), (1,α1), (0,α0); side k runs from
+    // corner k to corner k+1: θ = 0, t = 1, θ = α, t = 0.
+    const std::array<Vec2, 4> corner{ { Vec2(0, 0), Vec2(1, 0), Vec2(1, e.edgeAngle(1)), Vec2(0, e.edgeAngle(0)) } };
+    const double near = slack(1e-7, 1e4) / Size;
+    auto sideOf = [&](const Vec2& q) {
+      const double value[4] = { q.y(), q.x() - 1.0, q.y() - e.edgeAngle(q.x()), q.x() };
+      for (int k = 0; k < 4; ++k)
+        if (std::abs(value[k]) <= near)
+          return k;
+      return -1;
+    };
+    const int a = sideOf(from.q[O]), b = sideOf(to.q[O]);
+    if (a < 0 || b < 0 || a == b)
+      return false;
+    auto onSheet = [&](const Vec2& q, const SheetVertex& guess, SheetVertex& v) {
+      v = guess;
+      v.q[O] = q;
+      Vec2 qp;
+      return preimageOf(Side[O].evaluate(q), guess, qp, &v.r) && solve(qp, v) && medial(v);
+    };
+    for (int direction : { 1, -1 })
+    {
+      // Corners passed going from side a to side b.
+      std::vector<Vec2> path;
+      for (int k = a; k != b; k = (k + direction + 4) % 4)
+        path.push_back(corner[direction > 0 ? (k + 1) % 4 : k]);
+      std::vector<SheetVertex> found;
+      bool ok = true;
+      Vec2 last = from.q[O];
+      SheetVertex guess = from;
+      for (size_t k = 0; k <= path.size() && ok; ++k)
+      {
+        const Vec2 next = k < path.size() ? path[k] : to.q[O];
+        SheetVertex middle, c;
+        ok = onSheet(0.5 * (last + next), guess, middle) && (k == path.size() || onSheet(next, middle, c));
+        if (ok && k < path.size())
+        {
+          c.border = true;
+          found.push_back(c);
+          guess = c;
+        }
+        last = next;
+      }
+      if (ok)
+      {
+        corners = found;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The face owning a face side: P or O (−1 for neither).
+  int ownerOf(int face) const
+  {
+    for (int g : { P, O })
+      for (const Generator3D* m : Side[g].members())
+        if (m->kind() == GeneratorKind3D::Face && m->entity() == face)
+          return g;
+    return -1;
+  }
+
+  // The shortest chain of curved border sides of one owner's faces from a side in `a` to a
+  // side in `b`, consecutive sides sharing an end point (empty when there is none, or when
+  // a and b share a side: then no chain is needed).
+  std::vector<std::pair<int, int>> curvedSideChain(
+    const std::vector<std::pair<int, int>>& a, const std::vector<std::pair<int, int>>& b) const
+  {
+    std::vector<std::pair<int, int>> sides;
+    for (const auto& side : borderSides())
+      if (side.first >= 0 && curvedSide(side))
+        sides.push_back(side);
+    auto index = [&sides](const std::pair<int, int>& side) {
+      return static_cast<int>(std::find(sides.begin(), sides.end(), side) - sides.begin());
+    };
+    auto ends = [this](const std::pair<int, int>& side) {
+      const BezierCurve c = B.faces()[side.first].patch.side(side.second);
+      return std::array<Vec3, 2>{ { c.startPoint(), c.endPoint() } };
+    };
+    const int n = static_cast<int>(sides.size());
+    std::vector<int> from(n, -2);
+    std::vector<int> queue;
+    for (const auto& side : a)
+      if (const int i = index(side); i < n && from[i] == -2)
+      {
+        from[i] = -1;
+        queue.push_back(i);
+      }
+    for (size_t q = 0; q < queue.size(); ++q)
+    {
+      const int i = queue[q];
+      if (std::find(b.begin(), b.end(), sides[i]) != b.end())
+      {
+        std::vector<std::pair<int, int>> chain;
+        for (int k = i; k >= 0; k = from[k])
+          chain.insert(chain.begin(), sides[k]);
+        return chain.size() >= 2 ? chain : std::vector<std::pair<int, int>>{};
+      }
+      const auto ei = ends(sides[i]);
+      for (int j = 0; j < n; ++j)
+      {
+        if (from[j] != -2 || ownerOf(sides[j].first) != ownerOf(sides[i].first))
+          continue;
+        const auto ej = ends(sides[j]);
+        bool joined = false;
+        for (const Vec3& p : ei)
+          for (const Vec3& r : ej)
+            joined = joined || (p - r).norm() <= Touch;
+        if (joined)
+        {
+          from[j] = i;
+          queue.push_back(j);
+        }
+      }
+    }
+    return {};
+  }
+
+  // The border point where two consecutive sides of a chain meet: the ball touching their
+  // common end point along the owner's normal there.
+  bool sideJoint(const std::pair<int, int>& s, const std::pair<int, int>& t, const SheetVertex& near, SheetVertex& v) const
+  {
+    const BezierCurve a = B.faces()[s.first].patch.side(s.second), b = B.faces()[t.first].patch.side(t.second);
+    Vec3 joint = a.startPoint();
+    double gap = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : { a.startPoint(), a.endPoint() })
+      for (const Vec3& r : { b.startPoint(), b.endPoint() })
+        if ((p - r).norm() < gap)
+        {
+          gap = (p - r).norm();
+          joint = p;
+        }
+    const int owner = ownerOf(s.first);
+    Vec2 qp;
+    if (owner == P)
+      qp = Side[P].parameterOf(joint);
+    else if (owner != O || !preimage(joint, near, qp))
+      return false;
+    v = near;
+    v.q[O] = owner == O ? Side[O].parameterOf(joint) : near.q[O];
+    if (!solve(qp, v) || !medial(v))
+      return false;
+    v.border = true;
+    return true;
+  }
+
   // Whether a face side (face, patch side) bends away from its chord.
   bool curvedSide(const std::pair<int, int>& side) const
   {
@@ -1232,6 +1436,11 @@ private:
       if (!solved)
         fail("3D MAT sheets: the border of ", name(), " has an open end that cannot be closed along ",
           Side[P].name());
+#ifdef EXACTMAT_SHEET_DEBUG
+      if (!medial(v))
+        std::fprintf(stderr, "  gap point %zu of %zu (guided %d) off the MAT: from q_O (%.6g %.6g) r %.6g to q_O (%.6g %.6g) r %.6g\n", k,
+          fractions.size(), (int)static_cast<bool>(guide), from.q[O].x(), from.q[O].y(), from.r, target.q[O].x(), target.q[O].y(), target.r);
+#endif
       if (!medial(v))
         fail("3D MAT sheets: closing the border of ", name(), " between two open ends leaves the MAT (at ",
           v.x.transpose(), ")");
