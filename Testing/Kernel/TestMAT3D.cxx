@@ -596,16 +596,6 @@ TEST(MAT3D, MovedStaircaseJunctionsArePolishedToTheInputsRounding)
   }
 }
 
-// Where a swept solid is placed for the cross-check: x ↦ scale · rotation · x + offset, its
-// weights multiplied by weightFactor.
-struct Placement
-{
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  double scale = 1.0;
-  Vec3 offset = Vec3::Zero();
-  double weightFactor = 1.0;
-};
-
 // The profile swept, given as the swept solid's faces (placed) and traced as a general
 // solid: the 2.5D MAT's junctions (placed alike) one for one, to `tolerance` of the scale,
 // every point verified, the graph consistent.
@@ -620,8 +610,7 @@ void expectAgreesWithTheSweptSolidMAT(const std::vector<NurbsCurve>& curves, con
   Traced t;
   try
   {
-    t = trace(movedPieces(
-      sweptSolidFaces(generators, graph, sweep), placed.rotation, placed.scale, placed.offset, placed.weightFactor));
+    t = trace(movedPieces(sweptSolidFaces(generators, graph, sweep), placed));
   }
   catch (const InputError& e)
   {

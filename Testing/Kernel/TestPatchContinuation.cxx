@@ -68,3 +68,25 @@ TEST(PatchContinuation, PatchesThatOnlyComeCloseAreNot)
   // Another face of the pillow (it meets this one at an edge).
   EXPECT_FALSE(pieceOfSurface(surface, patchPieces(makeShape("pillow").surfaces)[1].patch, tolerance, map));
 }
+
+// Neighbouring pieces far from the origin, one a sliver: matched larger on smaller whichever
+// way they are asked (the sliver's extension evaluated fifty widths away multiplies the
+// rounding of coordinates near 1e5 by thousands), the maps inverted and composed exactly.
+TEST(PatchContinuation, NeighbourPiecesMatchWhicheverWayAsked)
+{
+  Vec4List net = rationalBicubic().homogeneousNet();
+  for (Vec4& h : net)
+    h.head<3>() += Vec3(1e5, -7e4, 4e4) * h.w();
+  const BezierPatch surface(3, 3, net);
+  const BezierPatch sliver = surface.subPatch(0.5, 0.51, 0.0, 1.0), wide = surface.subPatch(0.51, 1.0, 0.0, 1.0);
+  const double tolerance = 64.0 * std::numeric_limits<double>::epsilon() * 1.3e5;
+  ParameterMap wideInSliver, sliverInWide;
+  ASSERT_TRUE(piecesOfOneSurface(sliver, wide, tolerance, wideInSliver));
+  ASSERT_TRUE(piecesOfOneSurface(wide, sliver, tolerance, sliverInWide));
+  EXPECT_LT((wideInSliver(Vec2(0.0, 0.0)) - Vec2(1.0, 0.0)).norm(), 1e-6);
+  EXPECT_LT((wideInSliver(Vec2(1.0, 1.0)) - Vec2(50.0, 1.0)).norm(), 1e-6);
+  // One map is the other's inverse; composed, they are the identity.
+  const ParameterMap round = wideInSliver.after(sliverInWide);
+  EXPECT_LT((round(Vec2(0.3, 0.7)) - Vec2(0.3, 0.7)).norm(), 1e-6);
+  EXPECT_LT((wideInSliver.inverted()(Vec2(25.5, 0.5)) - sliverInWide(Vec2(25.5, 0.5))).norm(), 1e-6);
+}

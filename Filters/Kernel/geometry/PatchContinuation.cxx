@@ -13,12 +13,13 @@ namespace
 // guess, unclamped (a piece lies beyond the surface's own unit square).
 bool inverse(const BezierPatch& surface, const Vec3& x, Vec2& q, double tolerance)
 {
+  // Gauss–Newton until the step stalls, then the residual decides: a piece of a surface
+  // known only to the input's rounding meets the extension to that, not to any fraction
+  // of the tolerance.
   for (int it = 0; it < 50; ++it)
   {
     const SurfaceDerivatives d = surface.derivatives(q.x(), q.y());
     const Vec3 f = d.point - x;
-    if (f.norm() <= tolerance)
-      return true;
     Eigen::Matrix<double, 3, 2> j;
     j.col(0) = d.su;
     j.col(1) = d.sv;
@@ -28,6 +29,8 @@ bool inverse(const BezierPatch& surface, const Vec3& x, Vec2& q, double toleranc
     q += step;
     if (!q.allFinite() || q.cwiseAbs().maxCoeff() > 1e6)
       return false;
+    if (step.norm() <= 1e-14 * (1.0 + q.norm()))
+      break;
   }
   return (surface.evaluate(q.x(), q.y()) - x).norm() <= tolerance;
 }
@@ -44,7 +47,7 @@ bool pieceOfSurface(const BezierPatch& surface, const BezierPatch& piece, double
     const Vec3 x = piece.evaluate(corners[k].x(), corners[k].y());
     const PatchFootpoint f = closestPoint(surface, x);
     q[k] = Vec2(f.u, f.v);
-    if (!inverse(surface, x, q[k], 0.01 * tolerance))
+    if (!inverse(surface, x, q[k], tolerance))
       return false;
   }
   map.origin = q[0];
@@ -60,6 +63,17 @@ bool pieceOfSurface(const BezierPatch& surface, const BezierPatch& piece, double
     if ((surface.evaluate(s.x(), s.y()) - piece.evaluate(c.x(), c.y())).norm() > tolerance)
       return false;
   }
+  return true;
+}
+
+bool piecesOfOneSurface(const BezierPatch& a, const BezierPatch& b, double tolerance, ParameterMap& bInA)
+{
+  if (b.boundingBox().diagonal().norm() <= a.boundingBox().diagonal().norm())
+    return pieceOfSurface(a, b, tolerance, bInA);
+  ParameterMap aInB;
+  if (!pieceOfSurface(b, a, tolerance, aInB))
+    return false;
+  bInA = aInB.inverted();
   return true;
 }
 

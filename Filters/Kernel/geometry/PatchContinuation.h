@@ -19,6 +19,22 @@ struct ParameterMap
 
   Vec2 operator()(const Vec2& q) const { return origin + axes * q; }
   Vec2 inverse(const Vec2& q) const { return axes.inverse() * (q - origin); }
+  /// The map back: the surface's parameters to the piece's.
+  ParameterMap inverted() const
+  {
+    ParameterMap m;
+    m.axes = axes.inverse();
+    m.origin = -(m.axes * origin);
+    return m;
+  }
+  /// This map after `inner` (q ↦ this(inner(q))): a piece of a piece.
+  ParameterMap after(const ParameterMap& inner) const
+  {
+    ParameterMap m;
+    m.origin = (*this)(inner.origin);
+    m.axes = axes * inner.axes;
+    return m;
+  }
 };
 
 /// The map taking `piece`'s parameters to `surface`'s when `piece` is that surface
@@ -27,5 +43,11 @@ struct ParameterMap
 /// Newton on its polynomial extension, no clamping); false otherwise (a neighbour that only
 /// meets it smoothly, such as the next span of a B-spline).
 bool pieceOfSurface(const BezierPatch& surface, const BezierPatch& piece, double tolerance, ParameterMap& map);
+
+/// Whether two patches are pieces of one surface, with the map taking b's parameters to
+/// a's. Symmetric: the larger patch is asked to contain the other first (its extension is
+/// evaluated near its own square, where the input's rounding is not amplified: a sliver's
+/// extension evaluated twenty widths away multiplies it by hundreds), then the other way.
+bool piecesOfOneSurface(const BezierPatch& a, const BezierPatch& b, double tolerance, ParameterMap& bInA);
 
 } // namespace exactmat

@@ -23,6 +23,34 @@ bool isPlanar(const BezierPatch& patch, const Vec3& origin, const Vec3& normal, 
   return true;
 }
 
+// The unit normal of a wide triangle of the control net (from a corner, the point farthest
+// from it, then the point farthest from that line), turned like `hint`, and that triangle's
+// height (how well it fixes the normal: to the rounding over it). The plane of a planar face
+// as well as its net fixes it; a sliver's own derivatives fix it only to the rounding over
+// its width (a fillet's piece 1e-4 wide is tilted by 1e-8).
+Vec3 controlNetNormal(const BezierPatch& patch, const Vec3& hint, double& width)
+{
+  Vec3List net;
+  for (int i = 0; i <= patch.degreeU(); ++i)
+    for (int j = 0; j <= patch.degreeV(); ++j)
+      net.push_back(patch.controlPoint(i, j));
+  const Vec3 a = net.front();
+  Vec3 b = a;
+  for (const Vec3& p : net)
+    if ((p - a).squaredNorm() > (b - a).squaredNorm())
+      b = p;
+  Vec3 best = Vec3::Zero();
+  for (const Vec3& p : net)
+    if (const Vec3 n = (b - a).cross(p - a); n.squaredNorm() > best.squaredNorm())
+      best = n;
+  width = 0.0;
+  if (!(best.squaredNorm() > 0.0))
+    return hint;
+  width = best.norm() / (b - a).norm();
+  best.normalize();
+  return best.dot(hint) < 0.0 ? Vec3(-best) : best;
+}
+
 // The inward normal of a (curved) patch at (u, v) and its derivatives: n = −m/|m| with
 // m = Su × Sv, dn = −(dm − m̂(m̂·dm))/|m| (the Weingarten map from the second derivatives; no
 // curvature frame needed).
@@ -131,7 +159,8 @@ Generator3D::Generator3D(const Boundary3D& boundary, int face)
     // Planar to the input's rounding: a polyhedron far from the origin has its faces' corners
     // rounded off their plane by that much, and is still a polyhedron.
     const double tolerance = std::max(1e-12, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
-    Planar = isPlanar(patch, Origin, Inward, tolerance);
+    NetNormal = controlNetNormal(patch, Inward, NetWidth);
+    Planar = isPlanar(patch, Origin, NetNormal, tolerance);
   }
   for (int side = 0; side < 4; ++side)
   {
@@ -444,8 +473,20 @@ double Generator3D::distance(const Vec3& x) const
 
 bool Generator3D::coplanar(const Generator3D& other, double tolerance) const
 {
-  return Kind == GeneratorKind3D::Face && other.Kind == GeneratorKind3D::Face && Planar && other.Planar &&
-    Inward.dot(other.Inward) > 1.0 - 1e-12 && std::abs((other.Origin - Origin).dot(Inward)) <= tolerance;
+  if (Kind != GeneratorKind3D::Face || other.Kind != GeneratorKind3D::Face || !Planar || !other.Planar ||
+    !(NetNormal.dot(other.NetNormal) > 0.0))
+    return false;
+  // The narrower face's control points within `tolerance` of the wider face's plane
+  // (distances, not an angle between normals: a sliver's plane is known only to the
+  // rounding over its width, a wide face's to far less).
+  const Generator3D& wide = NetWidth >= other.NetWidth ? *this : other;
+  const Generator3D& narrow = &wide == this ? other : *this;
+  const BezierPatch& patch = narrow.Boundary->faces()[narrow.Entity].patch;
+  for (int i = 0; i <= patch.degreeU(); ++i)
+    for (int j = 0; j <= patch.degreeV(); ++j)
+      if (!(std::abs((patch.controlPoint(i, j) - wide.Origin).dot(wide.NetNormal)) <= tolerance))
+        return false;
+  return true;
 }
 
 std::string Generator3D::name() const

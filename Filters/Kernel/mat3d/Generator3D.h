@@ -87,8 +87,9 @@ public:
   /// The entity's point nearest x.
   Vec3 nearestPoint(const Vec3& x) const;
 
-  /// Two planar faces in one plane (same inward normal, offsets within `tolerance`): a
-  /// ball touches their union at one point at most.
+  /// Two planar faces in one plane (normals the same way, the narrower one's control points
+  /// within `tolerance` of the wider one's plane): a ball touches their union at one point
+  /// at most.
   bool coplanar(const Generator3D& other, double tolerance) const;
 
   /// Reflex corners: the edges (Boundary3D indices) bounding the normal cone.
@@ -124,6 +125,11 @@ private:
   std::vector<Vec2> Polygon;
   std::vector<int> PolygonSide;
   Vec3 Origin = Vec3::Zero(), Axis0 = Vec3::Zero(), Axis1 = Vec3::Zero(), Inward = Vec3::Zero();
+  /// A planar face's plane normal from a wide triangle of its control net (its derivatives'
+  /// normal, Inward, is tilted by the rounding over a sliver's width): what planarity and
+  /// coplanarity are judged by.
+  Vec3 NetNormal = Vec3::Zero();
+  double NetWidth = 0.0; ///< the height of the net's triangle that fixes NetNormal
 
   // Reflex edges: the curve (face A's side, t from the start vertex), and per face (0: A,
   // 1: B) its side, whether it is planar and then its constant normal.

@@ -16,4 +16,19 @@ namespace exactmat
 std::vector<PatchPiece> movedPieces(std::vector<PatchPiece> pieces, const Eigen::Matrix3d& rotation,
   double scale, const Vec3& offset, double weightFactor = 1.0);
 
+/// Where a solid is placed: x ↦ scale · rotation · x + offset, its weights multiplied by
+/// weightFactor.
+struct Placement
+{
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  double scale = 1.0;
+  Vec3 offset = Vec3::Zero();
+  double weightFactor = 1.0;
+};
+
+inline std::vector<PatchPiece> movedPieces(std::vector<PatchPiece> pieces, const Placement& placed)
+{
+  return movedPieces(std::move(pieces), placed.rotation, placed.scale, placed.offset, placed.weightFactor);
+}
+
 } // namespace exactmat

@@ -30,6 +30,45 @@ double MedialSheetMesh::area() const
 namespace
 {
 
+// The faces one face generator g is one face with to the sheets: reached through smooth
+// edges and in g's plane (a polygon split into a fan of triangles), or pieces of g's curved
+// surface (a surface of revolution cut where MAT samples touch) — each piece tested against
+// the neighbour it is reached from and the maps composed, so no extension is evaluated far
+// from its own square. In the order found, g first; maps (when asked): each one's
+// parameters in g's (curved g only).
+std::vector<int> surfacePieces(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g,
+  std::vector<ParameterMap>* maps)
+{
+  std::vector<int> members{ g };
+  std::vector<ParameterMap> found{ ParameterMap() };
+  if (generators[g].kind() != GeneratorKind3D::Face)
+    return members;
+  const bool planar = generators[g].planar();
+  const double rounding = 64.0 * boundary.userFrame().inputRounding();
+  const double tolerance = std::max(1e-9, rounding) * boundary.diagonal();
+  const double piece = std::max(1e-10, rounding) * boundary.diagonal();
+  auto patch = [&](int m) -> const BezierPatch& { return boundary.faces()[generators[m].entity()].patch; };
+  for (size_t k = 0; k < members.size(); ++k)
+    for (const Edge3D& e : boundary.edges())
+    {
+      if (e.kind != VertexKind::Smooth || (e.faceA != members[k] && e.faceB != members[k]))
+        continue;
+      const int other = e.faceA == members[k] ? e.faceB : e.faceA;
+      if (std::find(members.begin(), members.end(), other) != members.end())
+        continue;
+      ParameterMap map;
+      if (planar ? generators[other].planar() && generators[g].coplanar(generators[other], tolerance)
+                 : !generators[other].planar() && piecesOfOneSurface(patch(members[k]), patch(other), piece, map))
+      {
+        members.push_back(other);
+        found.push_back(found[k].after(map));
+      }
+    }
+  if (maps)
+    *maps = std::move(found);
+  return members;
+}
+
 /// One side of a sheet's pair: a generator, or faces of one surface joined by smooth
 /// edges — planar faces in one plane (a polygon split into a fan of triangles), or curved
 /// pieces of one Bézier surface (a surface of revolution cut where MAT samples touch) —
@@ -51,17 +90,18 @@ public:
     if (Members.size() > 1 && first().kind() == GeneratorKind3D::Face && !first().planar())
     {
       const BezierPatch& surface = boundary.faces()[first().entity()].patch;
-      const double tolerance =
-        std::max(1e-10, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
       const SurfaceDerivatives d = surface.derivatives(0.5, 0.5);
       Speed = Vec2(d.su.norm(), d.sv.norm());
       if (!(Speed.minCoeff() > 0.0))
         Speed = Vec2(1.0, 1.0);
-      for (const Generator3D* m : Members)
+      std::vector<ParameterMap> maps;
+      const std::vector<int> found = surfacePieces(boundary, generators, members.front(), &maps);
+      for (size_t k = 0; k < members.size(); ++k)
       {
-        PieceMaps.emplace_back();
-        if (!pieceOfSurface(surface, boundary.faces()[m->entity()].patch, tolerance, PieceMaps.back()))
-          fail("3D MAT sheets: ", m->name(), " is not a piece of the surface of ", first().name());
+        const auto at = std::find(found.begin(), found.end(), members[k]);
+        if (at == found.end())
+          fail("3D MAT sheets: ", Members[k]->name(), " is not a piece of the surface of ", first().name());
+        PieceMaps.push_back(maps[at - found.begin()]);
       }
     }
   }
@@ -70,11 +110,20 @@ public:
   GeneratorKind3D kind() const { return first().kind(); }
   Touch3D evaluate(const Vec2& q) const
   {
-    Touch3D t = first().evaluate(q.cwiseQuotient(Speed));
-    for (int k = 0; k < 2; ++k)
+    if (PieceMaps.empty())
+      return first().evaluate(q);
+    // On the piece whose square holds q (the input's own surface there, not the first
+    // piece's extension far from its square, which amplifies the input's rounding).
+    const Vec2 s = q.cwiseQuotient(Speed);
+    const size_t k = pieceHolding(s);
+    const Eigen::Matrix2d into = PieceMaps[k].axes.inverse();
+    Touch3D t = Members[k]->evaluate(into * (s - PieceMaps[k].origin));
+    t.dPoint = t.dPoint * into;
+    t.dNormal = t.dNormal * into;
+    for (int c = 0; c < 2; ++c)
     {
-      t.dPoint.col(k) /= Speed(k);
-      t.dNormal.col(k) /= Speed(k);
+      t.dPoint.col(c) /= Speed(c);
+      t.dNormal.col(c) /= Speed(c);
     }
     return t;
   }
@@ -162,7 +211,30 @@ private:
     return best;
   }
 
+  // The piece whose square holds s (the first's parameters), or the one it is least
+  // outside of; the last one found is asked first (Newton's steps stay on one piece).
+  size_t pieceHolding(const Vec2& s) const
+  {
+    auto outside = [&](size_t k) {
+      const Vec2 p = PieceMaps[k].inverse(s);
+      return std::max({ 0.0, -p.x(), p.x() - 1.0, -p.y(), p.y() - 1.0 });
+    };
+    if (outside(LastPiece) == 0.0)
+      return LastPiece;
+    size_t best = LastPiece;
+    double least = outside(LastPiece);
+    for (size_t k = 0; k < PieceMaps.size() && least > 0.0; ++k)
+      if (const double o = outside(k); o < least)
+      {
+        least = o;
+        best = k;
+      }
+    LastPiece = best;
+    return best;
+  }
+
   std::vector<const Generator3D*> Members;
+  mutable size_t LastPiece = 0;
   std::vector<Box3> Boxes;             ///< each face member's patch box (empty otherwise)
   std::vector<ParameterMap> PieceMaps; ///< curved members only: each piece's parameters → the first's
   Vec2 Speed = Vec2(1.0, 1.0);         ///< the side's parameters over the first's (curved members)
@@ -678,7 +750,11 @@ private:
               ++Mesh.gapVertices;
             }
           else if (!bestShares)
-            for (const SheetVertex& corner : cornersBetween(loop.back(), endSides, target, bestSides))
+            for (const SheetVertex& corner : cornersBetween(loop.back(), endSides, target, bestSides,
+                   { { arrival(loop.rbegin(), loop.rend()),
+                     next < 0 ? arrival(loop.begin(), loop.end())
+                              : (reversed ? arrival(pieces[next].rbegin(), pieces[next].rend())
+                                          : arrival(pieces[next].begin(), pieces[next].end())) } }))
             {
               appendGap(loop, corner);
               loop.push_back(corner);
@@ -782,14 +858,28 @@ private:
   /// Sides are (face, patch side); a reflex edge's are (edgeSideKey(), 0 … 3).
   int edgeSideKey() const { return -2 - Side[O].first().entity(); }
 
+  // Where a run arrives at its end (the range from that end inwards): its first vertex
+  // off the end's domain point, to tell the line it comes along.
+  template <typename It>
+  Vec2 arrival(It end, It stop) const
+  {
+    const Vec2 at = end->domain;
+    const double same = slack(1e-9, 1e3) / Size;
+    for (It it = end; it != stop; ++it)
+      if ((it->domain - at).norm() > 16.0 * same)
+        return it->domain;
+    return at;
+  }
+
   // The corners the border turns at between two free ends on different sides: where a
   // side of the first end meets a side of the second (one corner), or both meet a third
   // side (two corners), each corner on both sides' segments and a point of the sheet; the
   // shortest such path in P's parameters. A side of P is a segment of its parameters; a
   // side of O is its preimage, a segment when both sides are planar (the map from P's touch
   // to O's is affine). Sides between two faces of one side (smooth edges) are not borders.
+  // `arrivals`: where the runs ending at `from` and `to` come from (arrival).
   std::vector<SheetVertex> cornersBetween(const SheetVertex& from, const std::vector<std::pair<int, int>>& a,
-    const SheetVertex& to, const std::vector<std::pair<int, int>>& b) const
+    const SheetVertex& to, const std::vector<std::pair<int, int>>& b, const std::array<Vec2, 2>& arrivals) const
   {
     if (Projected || a.empty() || b.empty())
       return {};
@@ -879,6 +969,19 @@ private:
     for (auto* list : { &first, &middle, &last })
       for (Segment& g : *list)
         extend(g);
+    // Ends on one line of border sides that neither end's run arrives along (the pieces of
+    // a surface of revolution side by side, each with its own piece of the line): the
+    // border runs straight along it. (A run along the line — a sheet reaching a reflex
+    // edge on P's side — closes the other way round.)
+    auto onSegment = [same](const Segment& g, const Vec2& q) {
+      const Vec2 d = g.p1 - g.p0;
+      const double t = d.squaredNorm() > 0.0 ? std::clamp((q - g.p0).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      return (g.p0 + t * d - q).norm() <= same;
+    };
+    for (const Segment& g : middle)
+      if (onSegment(g, from.domain) && onSegment(g, to.domain) && !onSegment(g, arrivals[0]) &&
+        !onSegment(g, arrivals[1]))
+        return {};
     std::vector<SheetVertex> best;
     double shortest = std::numeric_limits<double>::infinity();
     auto offer = [&](const std::vector<SheetVertex>& path) {
@@ -1560,29 +1663,7 @@ private:
 
 std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g)
 {
-  std::vector<int> members{ g };
-  if (generators[g].kind() != GeneratorKind3D::Face)
-    return members;
-  const bool planar = generators[g].planar();
-  const double tolerance = 1e-9 * boundary.diagonal();
-  const double piece = std::max(1e-10, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
-  const BezierPatch& surface = boundary.faces()[generators[g].entity()].patch;
-  // Faces reached through smooth edges: in g's plane, or pieces of g's surface.
-  auto joins = [&](int other) {
-    if (planar)
-      return generators[other].planar() && generators[g].coplanar(generators[other], tolerance);
-    ParameterMap map;
-    return !generators[other].planar() && pieceOfSurface(surface, boundary.faces()[generators[other].entity()].patch, piece, map);
-  };
-  for (size_t k = 0; k < members.size(); ++k)
-    for (const Edge3D& e : boundary.edges())
-    {
-      if (e.kind != VertexKind::Smooth || (e.faceA != members[k] && e.faceB != members[k]))
-        continue;
-      const int other = e.faceA == members[k] ? e.faceB : e.faceA;
-      if (std::find(members.begin(), members.end(), other) == members.end() && joins(other))
-        members.push_back(other);
-    }
+  std::vector<int> members = surfacePieces(boundary, generators, g, nullptr);
   std::sort(members.begin(), members.end());
   return members;
 }
