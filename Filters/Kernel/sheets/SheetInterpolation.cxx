@@ -244,8 +244,10 @@ class SheetBuilder
 
 {
 public:
+  /// byEdge (0 or 1) for a pair of reflex edges: parameterise by that edge's touch
+  /// parameters (t, θ) instead of a plane fitted to the border (curvedEdgePair).
   SheetBuilder(const Boundary3D& boundary, const std::vector<Generator3D>& generators, const std::vector<int>& a,
-    const std::vector<int>& b, const SheetOptions& options)
+    const std::vector<int>& b, const SheetOptions& options, int byEdge = -1)
     : B(boundary)
     , Options(options)
     , Size(boundary.diagonal())
@@ -262,9 +264,25 @@ public:
     Projected = Side[0].kind() != GeneratorKind3D::Face && Side[1].kind() != GeneratorKind3D::Face;
     Rounding = boundary.userFrame().inputRounding();
     Touch = slack(1e-8, 1e3);
+    if (Projected && byEdge >= 0)
+    {
+      Projected = false;
+      Mesh.parameterisedBy = P = byEdge;
+      O = 1 - P;
+    }
   }
 
   std::string name() const { return "the sheet of " + Side[0].name() + " and " + Side[1].name(); }
+
+  // Two reflex edges, one of them curved (a revolved profile's reflex corners: two arcs):
+  // the sheet between them is not planar, and a plane fitted to its border parameterises
+  // it only between straight edges; each edge's own (t, θ) may (where the other's touch
+  // moves regularly with it).
+  bool curvedEdgePair() const
+  {
+    return Side[0].kind() == GeneratorKind3D::ReflexEdge && Side[1].kind() == GeneratorKind3D::ReflexEdge &&
+      Side[0].members().size() == 1 && Side[1].members().size() == 1 && (curvedEdge(0) || curvedEdge(1));
+  }
 
   MedialSheetMesh build(const std::vector<SheetBorderCurve>& curves, const std::vector<int>& convexEdges)
   {
@@ -1376,10 +1394,12 @@ private:
     return false;
   }
 
-  // Whether O is a reflex edge that bends away from its chord (a revolved profile's corner).
-  bool curvedEdge() const
+  // Whether O (or side g) is a reflex edge that bends away from its chord (a revolved
+  // profile's corner).
+  bool curvedEdge() const { return curvedEdge(O); }
+  bool curvedEdge(int g) const
   {
-    const Generator3D& e = Side[O].first();
+    const Generator3D& e = Side[g].first();
     const std::vector<int>& f = e.faces();
     if (f.empty())
       return false;
@@ -1434,8 +1454,13 @@ private:
         const double value[4] = { q.y(), q.y() - e.edgeAngle(q.x()), q.x(), q.x() - 1.0 };
         return std::abs(value[side]) <= near;
       };
+      // An end of radius 0 is where the edge ends on P: every normal angle's (θ = 0 and
+      // θ = α lead there alike).
+      auto onEnd = [&](const SheetVertex& v, const Vec2& q, int side) {
+        return on(q, side) || (side < 2 && v.r <= Touch && (on(q, 2) || on(q, 3)));
+      };
       for (int side = 0; side < 4 && !guide; ++side)
-        if (on(a, side) && on(b, side))
+        if (onEnd(from, a, side) && onEnd(target, b, side))
           guide = [this, &e, side, a, b](double f, const SheetVertex& near, Vec2& qp, Vec3& at) {
             Vec2 q = (1.0 - f) * a + f * b;
             if (side == 0)
@@ -1769,7 +1794,23 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
   if (!valid(a) || !valid(b))
     fail("3D MAT sheets: a pair of generators that are not the solid's ", generators.size());
   SheetBuilder builder(boundary, generators, a, b, options);
-  return builder.build(curves, convexEdges);
+  if (!builder.curvedEdgePair())
+    return builder.build(curves, convexEdges);
+  // Between two curved reflex edges: by the first edge's parameters, else the second's
+  // (whichever maps the border regularly: a seam can run along one edge's normal fan),
+  // else the fitted plane; every one is checked the same way.
+  std::string first;
+  for (int byEdge : { 0, 1, -1 })
+    try
+    {
+      return SheetBuilder(boundary, generators, a, b, options, byEdge).build(curves, convexEdges);
+    }
+    catch (const InputError& e)
+    {
+      if (first.empty())
+        first = e.what();
+    }
+  fail(first, " (nor by the other edge's parameters or a plane fitted to its border)");
 }
 
 std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,

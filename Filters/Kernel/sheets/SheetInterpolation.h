@@ -56,8 +56,9 @@ struct SheetVertex
   std::array<Vec2, 2> q{ { Vec2::Zero(), Vec2::Zero() } };
   std::array<Vec3, 2> touch{ { Vec3::Zero(), Vec3::Zero() } };
   /// Where the vertex lies in the sheet's parameter domain: its touch parameters on the
-  /// side that carries it, or its coordinates in the plane fitted to the border when both
-  /// sides are reflex edges or corners.
+  /// side that carries it (a reflex edge's (t, θ) between two reflex edges one of which is
+  /// curved), or its coordinates in the plane fitted to the border when both sides are
+  /// (straight) reflex edges or corners.
   Vec2 domain = Vec2::Zero();
   int source = -1;       ///< the border curve point it is (SheetBorderCurve::ids), or −1
   bool border = false;   ///< on the sheet's border (from a curve, a convex edge or a gap)
