@@ -726,11 +726,7 @@ TEST(MAT3D, RevolvedPolygonsAgreeWithTheSweptSolidMAT)
 // "outside" the ball by 1e-13): the valley test now allows for the input's rounding.
 TEST(MAT3D, MovedSweptSolidsAgreeWithTheSweptSolidMAT)
 {
-  Placement far;
-  far.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
-  far.scale = 1e-3;
-  far.offset = 1e5 * far.scale * Vec3(1.0, -0.7, 0.4);
-  far.weightFactor = 1e20;
+  const Placement far = farFromTheOrigin();
   for (const std::string name : { "rectangle", "l-shape" })
   {
     expectAgreesWithTheSweptSolidMAT(makeShape(name).curves, Sweep::revolution(90.0, Vec3(-3.0, 0.0, 0.0), Vec3::UnitY()),

@@ -455,11 +455,7 @@ TEST(Sheets, SweptPolygonsAgreeWithTheSweptSolidMAT)
 // evaluated on the piece whose square holds the point.
 TEST(Sheets, MovedRevolvedSolidsHaveTheSameSheets)
 {
-  Placement far;
-  far.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
-  far.scale = 1e-3;
-  far.offset = 1e5 * far.scale * Vec3(1.0, -0.7, 0.4);
-  far.weightFactor = 1e20;
+  const Placement far = farFromTheOrigin();
   expectSweptSheetsAgree("rectangle", Sweep::revolution(90.0, Vec3(-3.0, 0.0, 0.0), Vec3::UnitY()), far);
 }
 
@@ -469,11 +465,8 @@ TEST(Sheets, MovedRevolvedSolidsHaveTheSameSheets)
 // rounding over its width; planes now come from a wide triangle of the control net).
 TEST(Sheets, MovedSweptSolidsHaveTheSameSides)
 {
-  Placement far, large;
-  far.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
-  far.scale = 1e-3;
-  far.offset = 1e5 * far.scale * Vec3(1.0, -0.7, 0.4);
-  far.weightFactor = 1e20;
+  const Placement far = farFromTheOrigin();
+  Placement large;
   large.rotation = Eigen::AngleAxisd(2.1, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
   large.scale = 1e6;
   large.offset = 1e6 * large.scale * Vec3(-0.3, 1.0, 0.8);

@@ -1,5 +1,7 @@
 #include "shapes/Moved.h"
 
+#include <Eigen/Geometry>
+
 namespace exactmat
 {
 
@@ -19,6 +21,16 @@ std::vector<PatchPiece> movedPieces(std::vector<PatchPiece> pieces, const Eigen:
       map(p.triangle->points);
   }
   return pieces;
+}
+
+Placement farFromTheOrigin()
+{
+  Placement far;
+  far.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  far.scale = 1e-3;
+  far.offset = 1e5 * far.scale * Vec3(1.0, -0.7, 0.4);
+  far.weightFactor = 1e20;
+  return far;
 }
 
 } // namespace exactmat

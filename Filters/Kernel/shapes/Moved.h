@@ -26,6 +26,11 @@ struct Placement
   double weightFactor = 1.0;
 };
 
+/// A small solid far from the origin: turned by 0.7 rad about (0.3, −0.5, 0.8), scaled by
+/// 1e-3, moved 1e5 × that scale along (1, −0.7, 0.4) (some 3e4 × a unit solid's size),
+/// weights × 1e20 — the swept solids' invariance tests' placement.
+Placement farFromTheOrigin();
+
 inline std::vector<PatchPiece> movedPieces(std::vector<PatchPiece> pieces, const Placement& placed)
 {
   return movedPieces(std::move(pieces), placed.rotation, placed.scale, placed.offset, placed.weightFactor);
