@@ -1,7 +1,10 @@
 // The solid B-rep: face adjacency, orientation, edge and vertex classification.
 #include "brep/Boundary3D.h"
 #include "common/InputError.h"
+#include "brep/WindingNumber.h"
 #include "shapes/Catalogue.h"
+#include "shapes/Moved.h"
+#include "shapes/Polyhedra.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +17,32 @@ namespace
 Boundary3D buildShape(const std::string& name)
 {
   return Boundary3D::build(patchPieces(makeShape(name).surfaces));
+}
+
+std::vector<PatchPiece> joined(std::vector<PatchPiece> a, const std::vector<PatchPiece>& b)
+{
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The same faces, each with u and v exchanged: the whole shell turned inside out.
+std::vector<PatchPiece> insideOut(std::vector<PatchPiece> pieces)
+{
+  for (PatchPiece& piece : pieces)
+  {
+    const BezierPatch& p = piece.patch;
+    Vec4List net;
+    for (int j = 0; j <= p.degreeV(); ++j)
+      for (int i = 0; i <= p.degreeU(); ++i)
+        net.push_back(p.homogeneousPoint(i, j));
+    piece.patch = BezierPatch(p.degreeV(), p.degreeU(), net);
+  }
+  return pieces;
+}
+
+std::vector<PatchPiece> cylinderScaled(double scale, const Vec3& offset)
+{
+  return movedPieces(patchPieces(makeShape("cylinder").surfaces), Eigen::Matrix3d::Identity(), scale, offset);
 }
 } // namespace
 
@@ -134,4 +163,67 @@ TEST(Boundary3D, BadInputGivesClearErrors)
   nan[3].patch = BezierPatch(1, 1, net);
   EXPECT_NE(errorOf(nan).find("face 3: control point (0, 1) has a NaN"), std::string::npos)
     << errorOf(nan);
+}
+
+TEST(Boundary3D, WindingNumberIsOneInsideAndZeroOutsideEvenCloseToTheSurface)
+{
+  const Boundary3D cylinder = buildShape("cylinder"); // radius 1, |z| ≤ 1.5
+  std::vector<BezierPatch> shell;
+  for (const Face3D& f : cylinder.faces())
+    shell.push_back(f.patch);
+  for (double d : { 0.5, 1e-3, 1e-8, 1e-11 })
+  {
+    EXPECT_NEAR(windingNumber(shell, Vec3(1.0 - d, 0.0, 0.3)), 1.0, 1e-5) << d;
+    EXPECT_NEAR(windingNumber(shell, Vec3(1.0 + d, 0.0, 0.3)), 0.0, 1e-5) << d;
+    EXPECT_NEAR(windingNumber(shell, Vec3(0.2, 0.1, 1.5 - d)), 1.0, 1e-5) << d;
+    EXPECT_NEAR(windingNumber(shell, Vec3(0.2, 0.1, -1.5 - d)), 0.0, 1e-5) << d;
+  }
+  EXPECT_TRUE(std::isnan(windingNumber(shell, Vec3(1.0, 0.0, 0.3))));
+}
+
+TEST(Boundary3D, CavitiesFaceTheirNormalsIntoTheCavity)
+{
+  // The box [−2, 2] × [−1.5, 1.5] × [−1, 1] with a cylindrical cavity (radius 0.3, |z| ≤
+  // 0.45) off its centre, and a small box floating in the cavity: its normals point out
+  // again (the material lies outside it). Each shell given either way round.
+  const Vec3 c(0.4, -0.2, 0.1);
+  const std::vector<PatchPiece> outer = boxPolyhedron(2.0, 1.5, 1.0);
+  const std::vector<PatchPiece> cavity = cylinderScaled(0.3, c);
+  const std::vector<PatchPiece> island = movedPieces(boxPolyhedron(0.1, 0.1, 0.1), Eigen::Matrix3d::Identity(), 1.0, c);
+  const double cavityVolume = M_PI * 0.09 * 0.9, islandVolume = 0.008;
+  for (int flips = 0; flips < 8; ++flips)
+  {
+    const Boundary3D b = Boundary3D::build(joined(joined(flips & 1 ? insideOut(outer) : outer,
+      flips & 2 ? insideOut(cavity) : cavity), flips & 4 ? insideOut(island) : island));
+    EXPECT_NEAR(b.volume(), 24.0 - cavityVolume + islandVolume, 1e-5) << flips;
+    // The outer box's and the island's edges are convex, the cavity's rims reflex.
+    EXPECT_EQ(b.countEdges(VertexKind::Convex), 12 + 12) << flips;
+    EXPECT_EQ(b.countEdges(VertexKind::Reflex), 8) << flips;
+    for (const Face3D& f : b.faces())
+    {
+      if (f.piece < 6 || f.piece >= 12)
+        continue;
+      const Vec3 p = f.patch.evaluate(0.5, 0.5), n = f.patch.normal(0.5, 0.5);
+      const Vec3 away = std::abs(p.z() - c.z()) > 0.45 - 1e-9 ? Vec3(0, 0, p.z() - c.z()) : Vec3(p.x() - c.x(), p.y() - c.y(), 0);
+      EXPECT_LT(n.dot(away), 0.0) << f.name() << " of the cavity must face into it (" << flips << ")";
+    }
+  }
+  // Two separate solids both keep outward normals.
+  const Boundary3D two = Boundary3D::build(joined(outer, cylinderScaled(0.3, Vec3(5, 0, 0))));
+  EXPECT_NEAR(two.volume(), 24.0 + cavityVolume, 1e-5);
+  EXPECT_EQ(two.countEdges(VertexKind::Reflex), 0);
+}
+
+TEST(Boundary3D, ShellsThatCrossAreRefused)
+{
+  const std::vector<PatchPiece> crossing = joined(boxPolyhedron(2.0, 1.5, 1.0), cylinderScaled(0.3, Vec3(1.9, 0.0, 0.0)));
+  try
+  {
+    Boundary3D::build(crossing);
+    FAIL() << "crossing shells were accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("shell touches or crosses the shell of face"), std::string::npos) << e.what();
+  }
 }

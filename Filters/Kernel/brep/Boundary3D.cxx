@@ -1,5 +1,6 @@
 #include "Boundary3D.h"
 
+#include "brep/WindingNumber.h"
 #include "common/Format.h"
 #include "common/InputError.h"
 #include "common/UnionFind.h"
@@ -274,6 +275,7 @@ void Boundary3D::orientFaces()
     links[e.faceB].push_back({ e.faceA, same });
   }
   std::vector<int> sign(n, 0);
+  std::vector<std::vector<int>> shells;
   for (int seed = 0; seed < n; ++seed)
   {
     if (sign[seed] != 0)
@@ -318,7 +320,9 @@ void Boundary3D::orientFaces()
         sign[f] = -sign[f];
       }
     }
+    shells.push_back(std::move(component));
   }
+  turnCavitiesInwards(shells, sign);
   std::vector<BezierPatch> all;
   for (int f = 0; f < n; ++f)
   {
@@ -339,6 +343,71 @@ void Boundary3D::orientFaces()
     all.push_back(face.patch);
   }
   Volume = enclosedVolume(all);
+}
+
+void Boundary3D::turnCavitiesInwards(const std::vector<std::vector<int>>& shells, std::vector<int>& sign) const
+{
+  if (shells.size() < 2)
+  {
+    return;
+  }
+  // Every shell now has outward normals. A shell inside an odd number of others bounds a
+  // cavity (or an island in a cavity's cavity is even again): the material lies outside it,
+  // so its normals must point into it.
+  std::vector<std::vector<BezierPatch>> outward(shells.size());
+  std::vector<Box3> boxes(shells.size());
+  for (size_t s = 0; s < shells.size(); ++s)
+  {
+    boxes[s].setEmpty();
+    for (int f : shells[s])
+    {
+      outward[s].push_back(sign[f] > 0 ? Faces[f].patch : transposed(Faces[f].patch));
+      boxes[s].extend(Faces[f].patch.boundingBox());
+    }
+  }
+  for (size_t a = 0; a < shells.size(); ++a)
+  {
+    // Where shell a lies, asked at the middles of up to eight of its faces spread over it:
+    // disjoint shells give every sample the same answer, and a shell inside another lies in
+    // its box. (A crossing that no sample sees goes unnoticed: the data contract's shells
+    // are disjoint; this catches the usual mistakes, not every one.)
+    const size_t step = std::max<size_t>(1, shells[a].size() / 8);
+    const Face3D& face = Faces[shells[a].front()];
+    int depth = 0;
+    for (size_t b = 0; b < shells.size(); ++b)
+    {
+      if (b == a || !boxes[b].intersects(boxes[a]))
+      {
+        continue;
+      }
+      const std::string crossing = face.name() + "'s shell touches or crosses the shell of " +
+        Faces[shells[b].front()].name() + " (the shells of a solid must be disjoint)";
+      int inside = -1;
+      for (size_t k = 0; k < shells[a].size(); k += step)
+      {
+        const Vec3 p = Faces[shells[a][k]].patch.evaluate(0.5, 0.5);
+        const double w = boxes[b].contains(p) ? windingNumber(outward[b], p) : 0.0;
+        const int here = static_cast<int>(std::round(w));
+        if (!(std::abs(w - here) < 0.25) || here < 0 || here > 1 || (inside >= 0 && here != inside))
+        {
+          fail(crossing);
+        }
+        inside = here;
+      }
+      if (inside == 1 && !boxes[b].contains(boxes[a]))
+      {
+        fail(crossing);
+      }
+      depth += inside;
+    }
+    if (depth % 2 == 1)
+    {
+      for (int f : shells[a])
+      {
+        sign[f] = -sign[f];
+      }
+    }
+  }
 }
 
 void Boundary3D::classify(const Options& options)

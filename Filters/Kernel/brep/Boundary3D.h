@@ -5,8 +5,9 @@
 ///
 /// Faces are matched along shared boundary curves (conforming input: the two sides agree
 /// geometrically, compared at several parameters). Faces are oriented consistently across
-/// every shared edge and so that the enclosed volume is positive (normals Su×Sv point away
-/// from the material); a face met the other way round is re-parameterised, not rejected.
+/// every shared edge and so that the normals Su×Sv point away from the material: outwards on
+/// an outer shell, into the cavity on a shell that lies inside another (a cavity); a face
+/// met the other way round is re-parameterised, not rejected.
 
 #include "brep/Boundary2D.h"
 #include "nurbs/BezierPatch.h"
@@ -86,6 +87,7 @@ public:
 private:
   void matchSides(const Options& options);
   void orientFaces();
+  void turnCavitiesInwards(const std::vector<std::vector<int>>& shells, std::vector<int>& sign) const;
   void classify(const Options& options);
 
   std::vector<Face3D> Faces;
