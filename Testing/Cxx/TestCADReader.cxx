@@ -374,6 +374,10 @@ std::map<std::string, TopoDS_Shape> solids()
                              0.6 + 0.1 * ((i + j) % 3), 3).Shape());
     s["plate-16-holes"] = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(16, 16, 0.5).Shape(), holes).Shape();
   }
+  // A spherical cavity off the box's centre: two shells; the cavity's faces must come out
+  // with their normals into it (volume = box − ball).
+  s["box-with-spherical-cavity"] = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 3, 2).Shape(),
+    BRepPrimAPI_MakeSphere(gp_Pnt(2.3, 1.4, 1.1), 0.6).Shape()).Shape();
   s["plate-with-hole"] = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(4, 3, 0.5).Shape(),
     BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(1, 1.5, -1), gp_Dir(0, 0, 1)), 0.5, 3).Shape()).Shape();
   {
