@@ -14,6 +14,7 @@
 #include "medial/Verification.h"
 #include "sheets/SheetFit.h"
 #include "sheets/SheetInterpolation.h"
+#include "sheets/TransitionSheets.h"
 
 #include "vtkExactMATArrayNames.h"
 
@@ -531,35 +532,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   options.maxEdge = this->MaximumEdgeLength;
   const PatchBoundary exact(boundary);
   options.exact = &exact;
-  const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
-  // Each group's tuples in the sheet arrays: its traced pairs', or a new tuple for a sheet
-  // no seam lists (faces meeting at a convex edge), appended to the output's arrays.
-  std::vector<std::vector<int>> tupleIds(groups.size());
-  std::vector<std::string> extraGovernors, extraEdges;
-  for (size_t k = 0; k < groups.size(); ++k)
-  {
-    tupleIds[k] = groups[k].traced;
-    if (tupleIds[k].empty())
-    {
-      tupleIds[k].push_back(tuples + static_cast<int>(extraGovernors.size()));
-      auto label = [&](const std::vector<int>& side) {
-        return generatorLabel(boundary, generators[side.front()].faces());
-      };
-      extraGovernors.push_back(label(groups[k].a) + "," + label(groups[k].b));
-      std::string edges;
-      for (int e : convexEdgesBetween(boundary, generators, groups[k]))
-        edges += (edges.empty() ? "" : " ") + faceLabel(boundary, boundary.edges()[e].faceA) + "/" +
-          faceLabel(boundary, boundary.edges()[e].faceB);
-      extraEdges.push_back(edges);
-    }
-  }
-  const int allTuples = tuples + static_cast<int>(extraGovernors.size());
-  // A traced pair in no group has both generators in one plane (groupSheets): no sheet.
-  std::vector<int> status(allTuples, 0);
-  std::vector<std::string> messages(allTuples, "both generators lie in one plane: no sheet between them");
-  for (const std::vector<int>& ids : tupleIds)
-    for (int s : ids)
-      messages[s].clear();
+  std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
@@ -567,6 +540,16 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   std::vector<std::vector<SheetBorderCurve>> borders(groups.size());
   std::vector<std::vector<int>> borderEdges(groups.size());
   std::vector<std::string> labels(groups.size());
+  auto sideLabel = [&](const SheetGroup& group) {
+    std::string out;
+    for (const std::vector<int>* side : { &group.a, &group.b })
+    {
+      out += side == &group.b ? "," : "";
+      for (size_t i = 0; i < side->size(); ++i)
+        out += (i == 0 ? "" : "+") + generatorLabel(boundary, generators[(*side)[i]].faces());
+    }
+    return out;
+  };
   for (size_t k = 0; k < groups.size(); ++k)
   {
     const SheetGroup& group = groups[k];
@@ -599,13 +582,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       }
       curves.push_back(std::move(curve));
     }
-    auto sideLabel = [&](const std::vector<int>& side) {
-      std::string out;
-      for (int g : side)
-        out += (out.empty() ? "" : "+") + generatorLabel(boundary, generators[g].faces());
-      return out;
-    };
-    labels[k] = sideLabel(group.a) + "," + sideLabel(group.b);
+    labels[k] = sideLabel(group);
     borderEdges[k].assign(edges.begin(), edges.end());
   }
   // The sheets are independent: filled in parallel (vtkSMPTools), each into its own slot.
@@ -629,6 +606,45 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
         }
     });
   });
+  // Sheets no seam borders, found beyond the borders of those built (as interpolateSheets
+  // does): each new one is a tuple of its own, appended to the sheet arrays.
+  addTransitionSheets(boundary, generators, groups, borders, filled, errors,
+    [&](const SheetGroup& group, const std::vector<SheetBorderCurve>& curves) {
+      const std::vector<int> found = convexEdgesBetween(boundary, generators, group);
+      const std::set<int> edges(found.begin(), found.end());
+      return interpolateSheet(boundary, generators, group.a, group.b, curves, std::vector<int>(edges.begin(), edges.end()),
+        options);
+    });
+  for (size_t k = labels.size(); k < groups.size(); ++k)
+    labels.push_back(sideLabel(groups[k]));
+  // Each group's tuples in the sheet arrays: its traced pairs', or a new tuple for a sheet
+  // no seam lists (faces meeting at a convex edge), appended to the output's arrays.
+  std::vector<std::vector<int>> tupleIds(groups.size());
+  std::vector<std::string> extraGovernors, extraEdges;
+  for (size_t k = 0; k < groups.size(); ++k)
+  {
+    tupleIds[k] = groups[k].traced;
+    if (tupleIds[k].empty())
+    {
+      tupleIds[k].push_back(tuples + static_cast<int>(extraGovernors.size()));
+      auto label = [&](const std::vector<int>& side) {
+        return generatorLabel(boundary, generators[side.front()].faces());
+      };
+      extraGovernors.push_back(label(groups[k].a) + "," + label(groups[k].b));
+      std::string edges;
+      for (int e : convexEdgesBetween(boundary, generators, groups[k]))
+        edges += (edges.empty() ? "" : " ") + faceLabel(boundary, boundary.edges()[e].faceA) + "/" +
+          faceLabel(boundary, boundary.edges()[e].faceB);
+      extraEdges.push_back(edges);
+    }
+  }
+  const int allTuples = tuples + static_cast<int>(extraGovernors.size());
+  // A traced pair in no group has both generators in one plane (groupSheets): no sheet.
+  std::vector<int> status(allTuples, 0);
+  std::vector<std::string> messages(allTuples, "both generators lie in one plane: no sheet between them");
+  for (const std::vector<int>& ids : tupleIds)
+    for (int s : ids)
+      messages[s].clear();
   progress(0.6);
   // The B-spline fits (port 1), also independent per sheet.
   const auto fitStart = std::chrono::steady_clock::now();

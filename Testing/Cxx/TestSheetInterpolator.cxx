@@ -461,6 +461,30 @@ TEST(vtkSheetInterpolator, SteppedBlockIsCompleteAndExact)
   EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
 }
 
+TEST(vtkSheetInterpolator, BoxWithACavityIsCompleteAndExact)
+{
+  // A second shell inside the first: its faces point into the cavity, its edges are reflex.
+  // The cavity's ±y walls face the box's across a gap narrower than any other: no seam
+  // touches them or their edges, and their sheets (and the edges' and corners' beside them)
+  // are found beyond the borders of the traced ones, each a sheet of its own in the arrays.
+  vtkNew<vtkNURBSSource> cavity;
+  cavity->SetShapeName("box-with-cavity");
+  Pipeline p(cavity);
+  ASSERT_TRUE(p.errors->Messages.empty()) << p.errors->Messages;
+  EXPECT_TRUE(p.sheets->GetVerificationPassed()) << p.warnings->Messages;
+  EXPECT_EQ(p.sheets->GetNumberOfFailedSheets(), 0);
+  EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
+  EXPECT_LE(worstRadiusError(cavity->GetOutput(), p.sheets->GetOutput(), 1), 1e-9);
+  // Every sheet's tuple is in the sheet arrays, the untraced ones appended with no seams.
+  vtkStringArray* governors = vtkStringArray::SafeDownCast(p.sheets->GetOutput()->GetFieldData()->GetAbstractArray("SheetGovernors"));
+  vtkStringArray* seams = vtkStringArray::SafeDownCast(p.sheets->GetOutput()->GetFieldData()->GetAbstractArray("SheetSeams"));
+  vtkStringArray* given = vtkStringArray::SafeDownCast(p.mat->GetOutput()->GetFieldData()->GetAbstractArray("SheetGovernors"));
+  ASSERT_TRUE(governors && seams && given);
+  EXPECT_GT(governors->GetNumberOfValues(), given->GetNumberOfValues());
+  for (vtkIdType k = given->GetNumberOfValues(); k < governors->GetNumberOfValues(); ++k)
+    EXPECT_TRUE(seams->GetValue(k).empty()) << governors->GetValue(k);
+}
+
 TEST(vtkSheetInterpolator, SweptSolidsFromEitherFilterAgree)
 {
   // vtkMAT25DFilter's output (exact swept sheets) passes through, numbered as sheets and

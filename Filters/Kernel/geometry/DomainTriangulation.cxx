@@ -79,6 +79,10 @@ int DomainTriangulation::size() const
 std::vector<std::array<int, 3>> DomainTriangulation::triangles() const
 {
   const CDT& cdt = D->cdt;
+  // Every vertex on one line: the region has no area (and a 1-dimensional triangulation's
+  // faces are not the ones walked below).
+  if (cdt.dimension() < 2)
+    return {};
   // Parity of the constrained edges crossed from the infinite face: odd = inside.
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
     f->info() = -1;

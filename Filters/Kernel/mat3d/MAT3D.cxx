@@ -1615,8 +1615,21 @@ MAT3D Tracer::run()
       for (int g : ball.generators)
         for (int f : Generators[g].faces())
           touched[root(f)] = true;
+  // A planar face bounded by reflex edges only (a cavity's or pocket's wall) is exempt:
+  // its sheets are bounded where their touch reaches those edges and go on as the edges'
+  // sheets, which the sheet interpolator finds from the traced ones (transitionSheets);
+  // what it cannot find, its face coverage check reports.
+  std::vector<bool> walled(faces, true);
   for (int f = 0; f < faces; ++f)
-    if (!touched[root(f)])
+    walled[f] = Generators[f].planar();
+  for (const Edge3D& e : B.edges())
+    if (e.kind != VertexKind::Reflex && root(e.faceA) != root(e.faceB))
+      walled[e.faceA] = walled[e.faceB] = false;
+  for (int f = 0; f < faces; ++f)
+    if (!walled[f])
+      walled[root(f)] = false;
+  for (int f = 0; f < faces; ++f)
+    if (!touched[root(f)] && !walled[root(f)])
       fail("3D MAT: no seam touches ", B.faces()[f].name(),
         ": its sheets are bounded only by edges, circles of contact or skeletal edges, which are not traced yet");
   // Corners where convex and reflex edges meet are tried as starts; those no seam leaves

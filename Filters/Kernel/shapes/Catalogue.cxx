@@ -4,6 +4,7 @@
 #include "nurbs/BezierExtraction.h"
 #include "shapes/Primitives.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -114,18 +115,24 @@ NurbsSurface quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return bezierSurface(1, 1, Vec3List{ a, d, b, c });
 }
 
-std::vector<NurbsSurface> boxFaces(double w, double h, double l)
+// The box's faces counter-clockwise seen from outside (normals out), or clockwise (normals
+// in: the box as a cavity, its faces pointing away from the material around it).
+std::vector<NurbsSurface> boxFaces(double w, double h, double l, const Vec3& centre = Vec3::Zero(), bool inward = false)
 {
   const double x = w / 2, y = h / 2, z = l / 2;
-  auto P = [&](int i, int j, int k) { return Vec3(i ? x : -x, j ? y : -y, k ? z : -z); };
-  return {
-    quad(P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0)), // z = −z, normal −z
-    quad(P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1)), // z = +z
-    quad(P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)), // y = −y
-    quad(P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)), // y = +y
-    quad(P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)), // x = −x
-    quad(P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)), // x = +x
-  };
+  auto P = [&](int i, int j, int k) -> Vec3 { return centre + Vec3(i ? x : -x, j ? y : -y, k ? z : -z); };
+  const std::array<std::array<Vec3, 4>, 6> corners{ {
+    { { P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0) } }, // z = −z, normal −z
+    { { P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1) } }, // z = +z
+    { { P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1) } }, // y = −y
+    { { P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0) } }, // y = +y
+    { { P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0) } }, // x = −x
+    { { P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1) } }, // x = +x
+  } };
+  std::vector<NurbsSurface> faces;
+  for (const auto& c : corners)
+    faces.push_back(inward ? quad(c[0], c[3], c[2], c[1]) : quad(c[0], c[1], c[2], c[3]));
+  return faces;
 }
 
 // The boundary of the filled cells of a grid with cell walls at xs × ys × zs: one bilinear
@@ -317,7 +324,8 @@ const std::vector<std::string>& catalogueNames()
 {
   static const std::vector<std::string> names{ "rectangle", "rounded-rectangle", "circle",
     "ellipse", "annulus", "l-shape", "star", "blob", "spiral", "plate-with-holes",
-    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube", "stepped-block" };
+    "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube", "stepped-block",
+    "box-with-cavity" };
   return names;
 }
 
@@ -470,6 +478,23 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
     requirePositive(s.length, "length", name);
     shape.dimension = 3;
     shape.surfaces = boxFaces(w, h, s.length);
+  }
+  else if (name == "box-with-cavity")
+  {
+    requirePositive(w, "width", name);
+    requirePositive(h, "height", name);
+    requirePositive(s.length, "length", name);
+    requirePositive(s.thickness, "thickness", name);
+    // The cube moved along x by an eighth of the room left beside it: off centre, so the
+    // MAT has no symmetry to lean on.
+    const Vec3 centre((w - s.thickness) / 8.0, 0.0, 0.0);
+    if (!(s.thickness < std::min(h, s.length)))
+      fail("shape '", name, "': thickness ", s.thickness, " (the cavity's edge) must be less than min(height, length)");
+    shape.dimension = 3;
+    shape.surfaces = boxFaces(w, h, s.length);
+    // The cavity's faces, turned to face into it (away from the material).
+    for (NurbsSurface& f : boxFaces(s.thickness, s.thickness, s.thickness, centre, true))
+      shape.surfaces.push_back(std::move(f));
   }
   else if (name == "notched-cube")
   {

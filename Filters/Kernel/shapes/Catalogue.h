@@ -43,7 +43,9 @@ struct Shape
 /// Names accepted by makeShape, 2D first: rectangle, rounded-rectangle, circle, ellipse,
 /// annulus, l-shape, star, blob, spiral, plate-with-holes, narrow-passage, box, cylinder,
 /// pillow, extrusion, revolution, notched-cube (edge = width, the (+, +, +) eighth cut away),
-/// stepped-block (a width × height × length/2 base and a half-size block centred on top).
+/// stepped-block (a width × height × length/2 base and a half-size block centred on top),
+/// box-with-cavity (the box with a cubic cavity of edge thickness, moved off centre along x
+/// by (width − thickness)/8).
 const std::vector<std::string>& catalogueNames();
 
 /// Builds the named shape; throws InputError for an unknown name or parameters that make

@@ -1,5 +1,7 @@
 #include "sheets/SheetInterpolation.h"
 
+#include "sheets/TransitionSheets.h"
+
 #include "common/InputError.h"
 #include "geometry/ClosestPoint.h"
 #include "geometry/DomainTriangulation.h"
@@ -1444,9 +1446,14 @@ private:
         };
       }
     }
-    if (!guide && !Projected && Side[O].kind() == GeneratorKind3D::ReflexEdge && Side[O].members().size() == 1 &&
-      curvedEdge())
+    // Along a side of O's reflex edge: sampled in the edge's parameters when the edge is
+    // curved (every side is a curve in P's parameters), and at its ends t = 0, 1 when it is
+    // straight too (the balls touching the end vertex fan its normals: a conic in P's
+    // parameters — a circle around a face the edge meets at right angles, as a cavity's edge
+    // meets the outer face across the gap; its chord would cut into the vertex's sheet).
+    if (!guide && !Projected && Side[O].kind() == GeneratorKind3D::ReflexEdge && Side[O].members().size() == 1)
     {
+      const bool curved = curvedEdge();
       const Generator3D& e = Side[O].first();
       const Vec2 a = from.q[O], b = target.q[O];
       const double near = slack(1e-7, 1e4) / Size;
@@ -1459,7 +1466,7 @@ private:
       auto onEnd = [&](const SheetVertex& v, const Vec2& q, int side) {
         return on(q, side) || (side < 2 && v.r <= Touch && (on(q, 2) || on(q, 3)));
       };
-      for (int side = 0; side < 4 && !guide; ++side)
+      for (int side = curved ? 0 : 2; side < 4 && !guide; ++side)
         if (onEnd(from, a, side) && onEnd(target, b, side))
           guide = [this, &e, side, a, b](double f, const SheetVertex& near, Vec2& qp, Vec3& at) {
             Vec2 q = (1.0 - f) * a + f * b;
@@ -1820,20 +1827,28 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   std::vector<std::array<int, 2>> pairs;
   for (const MAT3DSheet& sheet : mat.sheets)
     pairs.push_back({ { sheet.generatorA, sheet.generatorB } });
-  const std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
+  std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
   const PatchBoundary exact(boundary);
   SheetOptions checked = options;
   if (!checked.exact)
     checked.exact = &exact;
+  auto build = [&](const SheetGroup& group, const std::vector<SheetBorderCurve>& curves) {
+    const std::vector<int> found = convexEdgesBetween(boundary, generators, group);
+    const std::set<int> edges(found.begin(), found.end());
+    MedialSheetMesh mesh = interpolateSheet(boundary, generators, group.a, group.b, curves,
+      std::vector<int>(edges.begin(), edges.end()), checked);
+    mesh.traced = group.traced;
+    return mesh;
+  };
   std::vector<MedialSheetMesh> out;
+  std::vector<std::vector<SheetBorderCurve>> borders;
+  std::vector<std::string> errors;
   for (const SheetGroup& group : groups)
   {
     std::vector<SheetBorderCurve> curves;
-    std::set<int> seams, edges;
+    std::set<int> seams;
     for (int s : group.traced)
       seams.insert(mat.sheets[s].seams.begin(), mat.sheets[s].seams.end());
-    for (int e : convexEdgesBetween(boundary, generators, group))
-      edges.insert(e);
     for (int k : seams)
     {
       SheetBorderCurve curve;
@@ -1846,20 +1861,26 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
       }
       curves.push_back(std::move(curve));
     }
+    errors.emplace_back();
     try
     {
-      out.push_back(interpolateSheet(boundary, generators, group.a, group.b, curves,
-        std::vector<int>(edges.begin(), edges.end()), checked));
+      out.push_back(build(group, curves));
     }
     catch (const InputError& e)
     {
-      failures.emplace_back(static_cast<int>(out.size()), e.what());
+      errors.back() = e.what();
       out.emplace_back();
       out.back().generators = { { group.a.front(), group.b.front() } };
       out.back().members = { { group.a, group.b } };
+      out.back().traced = group.traced;
     }
-    out.back().traced = group.traced;
+    borders.push_back(std::move(curves));
   }
+  // Sheets no seam borders, found beyond the borders of those built.
+  addTransitionSheets(boundary, generators, groups, borders, out, errors, build);
+  for (size_t k = 0; k < errors.size(); ++k)
+    if (!errors[k].empty())
+      failures.emplace_back(static_cast<int>(k), errors[k]);
   return out;
 }
 
