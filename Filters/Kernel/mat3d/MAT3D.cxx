@@ -1615,10 +1615,22 @@ MAT3D Tracer::run()
       for (int g : ball.generators)
         for (int f : Generators[g].faces())
           touched[root(f)] = true;
-  // A planar face bounded by reflex edges only (a cavity's or pocket's wall) is exempt:
-  // its sheets are bounded where their touch reaches those edges and go on as the edges'
-  // sheets, which the sheet interpolator finds from the traced ones (transitionSheets);
-  // what it cannot find, its face coverage check reports.
+  // A planar face bounded by reflex edges only (a cavity's or pocket's wall) is exempt when
+  // seams reach its shell: its sheets are bounded where their touch reaches those edges and
+  // go on as the edges' sheets, which the sheet interpolator finds from the traced ones
+  // (transitionSheets); what it cannot find, its face coverage check reports. A shell no
+  // seam reaches at all (a small cavity inside a sheet, ringed by a loop of seams that
+  // nothing leads to from the convex vertices) is still refused.
+  std::vector<int> shell(faces);
+  for (int f = 0; f < faces; ++f)
+    shell[f] = f;
+  std::function<int(int)> shellOf = [&](int f) { return shell[f] == f ? f : shell[f] = shellOf(shell[f]); };
+  for (const Edge3D& e : B.edges())
+    shell[shellOf(e.faceA)] = shellOf(e.faceB);
+  std::vector<bool> shellTouched(faces, false);
+  for (int f = 0; f < faces; ++f)
+    if (touched[root(f)])
+      shellTouched[shellOf(f)] = true;
   std::vector<bool> walled(faces, true);
   for (int f = 0; f < faces; ++f)
     walled[f] = Generators[f].planar();
@@ -1629,7 +1641,7 @@ MAT3D Tracer::run()
     if (!walled[f])
       walled[root(f)] = false;
   for (int f = 0; f < faces; ++f)
-    if (!touched[root(f)] && !walled[root(f)])
+    if (!touched[root(f)] && !(walled[root(f)] && shellTouched[shellOf(f)]))
       fail("3D MAT: no seam touches ", B.faces()[f].name(),
         ": its sheets are bounded only by edges, circles of contact or skeletal edges, which are not traced yet");
   // Corners where convex and reflex edges meet are tried as starts; those no seam leaves
