@@ -1,5 +1,7 @@
 #include "WindingNumber.h"
 
+#include "common/GaussLegendre.h"
+
 #include <cmath>
 #include <limits>
 
@@ -10,12 +12,8 @@ namespace
 {
 
 // Gauss–Legendre, 8 points on [0,1].
-const double GX[8] = { 0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
-  0.4082826787521751, 0.5917173212478249, 0.7627662049581645, 0.8983332387068134,
-  0.9801449282487681 };
-const double GW[8] = { 0.0506142681451881, 0.1111905172266872, 0.1568533229389436,
-  0.1813418916891810, 0.1813418916891810, 0.1568533229389436, 0.1111905172266872,
-  0.0506142681451881 };
+const double* const GX = GaussLegendre8X;
+const double* const GW = GaussLegendre8W;
 
 constexpr int MaximumDepth = 40;
 
