@@ -536,9 +536,8 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
-  // Each sheet's border curves, convex edges and label (checking the input as it goes).
+  // Each sheet's border curves and label (checking the input as it goes).
   std::vector<std::vector<SheetBorderCurve>> borders(groups.size());
-  std::vector<std::vector<int>> borderEdges(groups.size());
   std::vector<std::string> labels(groups.size());
   auto sideLabel = [&](const SheetGroup& group) {
     std::string out;
@@ -554,7 +553,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   {
     const SheetGroup& group = groups[k];
     std::vector<SheetBorderCurve>& curves = borders[k];
-    std::set<int> seams, edges;
+    std::set<int> seams;
     for (int s : group.traced)
     {
       for (const std::string& w : words(sheetSeams->GetValue(s), ' '))
@@ -569,8 +568,6 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
           if (!edgeByLabel.count(w))
             fail("sheet ", s, ": its convex edge ", w, " is not an edge of the source");
     }
-    for (int e : convexEdgesBetween(boundary, generators, group))
-      edges.insert(e);
     for (int e : seams)
     {
       SheetBorderCurve curve;
@@ -583,7 +580,6 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       curves.push_back(std::move(curve));
     }
     labels[k] = sideLabel(group);
-    borderEdges[k].assign(edges.begin(), edges.end());
   }
   // The sheets are independent: filled in parallel (vtkSMPTools), each into its own slot.
   std::vector<MedialSheetMesh> filled(groups.size());
@@ -593,8 +589,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       for (std::size_t k = begin; k < end; ++k)
         try
         {
-          filled[k] = interpolateSheet(boundary, generators, groups[k].a, groups[k].b, borders[k],
-            borderEdges[k], options);
+          filled[k] = interpolateSheet(boundary, generators, groups[k], borders[k], options);
         }
         catch (const InputError& e)
         {
@@ -608,13 +603,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   });
   // Sheets no seam borders, found beyond the borders of those built (as interpolateSheets
   // does): each new one is a tuple of its own, appended to the sheet arrays.
-  addTransitionSheets(boundary, generators, groups, borders, filled, errors,
-    [&](const SheetGroup& group, const std::vector<SheetBorderCurve>& curves) {
-      const std::vector<int> found = convexEdgesBetween(boundary, generators, group);
-      const std::set<int> edges(found.begin(), found.end());
-      return interpolateSheet(boundary, generators, group.a, group.b, curves, std::vector<int>(edges.begin(), edges.end()),
-        options);
-    });
+  addTransitionSheets(boundary, generators, groups, borders, filled, errors, options);
   for (size_t k = labels.size(); k < groups.size(); ++k)
     labels.push_back(sideLabel(groups[k]));
   // Each group's tuples in the sheet arrays: its traced pairs', or a new tuple for a sheet

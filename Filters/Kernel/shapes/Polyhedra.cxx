@@ -1,8 +1,10 @@
 #include "Polyhedra.h"
 
 #include "common/InputError.h"
+#include "shapes/Moved.h"
 
 #include <cmath>
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -189,6 +191,33 @@ std::vector<PatchPiece> randomFrustum(std::mt19937& rng, int n)
   faces.push_back(bottom);
   faces.push_back(top);
   return polyhedron(v, faces);
+}
+
+std::vector<PatchPiece> randomBoxWithCavity(std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int attempt = 0;; ++attempt)
+  {
+    const double a = 1.0 + 2.0 * U(rng), b = 0.7 + 1.5 * U(rng), c = 0.5 + 1.0 * U(rng);
+    const double ha = (0.15 + 0.6 * U(rng)) * std::min({ a, b, c });
+    const double hb = ha * (0.6 + 0.8 * U(rng)), hc = ha * (0.6 + 0.8 * U(rng));
+    Vec3 o((a - ha) * (U(rng) - 0.5) * 1.6, (b - hb) * (U(rng) - 0.5) * 1.6, (c - hc) * (U(rng) - 0.5) * 1.6);
+    const bool inside =
+      std::abs(o.x()) + ha < 0.95 * a && std::abs(o.y()) + hb < 0.95 * b && std::abs(o.z()) + hc < 0.95 * c;
+    // A draw that pokes out is drawn again (about one in four); after 64 the cavity is
+    // centred, which always fits.
+    if (!inside && attempt < 64)
+      continue;
+    if (!inside)
+      o = Vec3::Zero();
+    std::vector<PatchPiece> pieces = boxPolyhedron(a, b, c);
+    for (PatchPiece& p : movedPieces(boxPolyhedron(ha, hb, hc), Eigen::Matrix3d::Identity(), 1.0, o))
+    {
+      p.entity += 6;
+      pieces.push_back(std::move(p));
+    }
+    return pieces;
+  }
 }
 
 std::vector<PatchPiece> boxWithFreeFormTop(double a, double b, double c, double bulge, double tilt)

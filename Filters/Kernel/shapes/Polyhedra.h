@@ -21,6 +21,13 @@ std::vector<PatchPiece> polyhedron(const Vec3List& vertices, const std::vector<s
 /// The box [−a, a] × [−b, b] × [−c, c].
 std::vector<PatchPiece> boxPolyhedron(double a, double b, double c);
 
+/// A random box (half-sides a 1…3, b 0.7…2.2, c 0.5…1.5) with a box-shaped cavity inside
+/// (half-sides 0.15…0.75 of the smallest, each of the other two 0.6…1.4 times the first,
+/// anywhere with its walls at least 5% of the box's half-sides from the box's): a second
+/// shell, given outward like the first (Boundary3D turns it), whose edges are reflex.
+/// Entities 0…5 the box's faces, 6…11 the cavity's.
+std::vector<PatchPiece> randomBoxWithCavity(std::mt19937& rng);
+
 /// The box [−a, a] × [−b, b] × [−c, c] whose top (z = c) is a bicubic patch with its four
 /// inner control points raised by bulge·(1 + tilt·(i − 1.5)) (i along x): a free-form face
 /// meeting four planar ones along straight convex edges.

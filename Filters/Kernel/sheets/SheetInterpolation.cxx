@@ -1585,8 +1585,42 @@ private:
     }
   }
 
-  void triangulate(const std::vector<std::vector<SheetVertex>>& loops)
+  // Twice the area a loop encloses in P's parameters over its length: its width when it
+  // is a sliver.
+  static double width(const std::vector<SheetVertex>& loop)
   {
+    double twiceArea = 0.0, length = 0.0;
+    for (size_t k = 0; k < loop.size(); ++k)
+    {
+      const Vec2& a = loop[k].domain;
+      const Vec2& b = loop[(k + 1) % loop.size()].domain;
+      twiceArea += a.x() * b.y() - a.y() * b.x();
+      length += (b - a).norm();
+    }
+    return length > 0.0 ? std::abs(twiceArea) / length : 0.0;
+  }
+
+  void triangulate(const std::vector<std::vector<SheetVertex>>& given)
+  {
+    // A loop narrower than two domain points held apart (out along a line and back: a
+    // sheet the tracer lists whose balls all touch one line of P, a face and a cavity wall
+    // perpendicular to it seen across a gap) bounds nothing. Exactly on one line it gave no
+    // triangles; turned or moved, the rounding made its two sides cross.
+    const double same = slack(1e-9, 1e3) / Size;
+    std::vector<std::vector<SheetVertex>> loops;
+    for (const auto& loop : given)
+      if (width(loop) > same)
+        loops.push_back(loop);
+    if (loops.empty())
+    {
+      for (const auto& loop : given)
+      {
+        Mesh.vertices.insert(Mesh.vertices.end(), loop.begin(), loop.end());
+        Mesh.loopSizes.push_back(static_cast<int>(loop.size()));
+      }
+      Mesh.loops = static_cast<int>(given.size());
+      return;
+    }
     std::vector<std::vector<Vec2>> domain;
     for (const auto& loop : loops)
     {
@@ -1820,6 +1854,17 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
   fail(first, " (nor by the other edge's parameters or a plane fitted to its border)");
 }
 
+MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const SheetGroup& group, const std::vector<SheetBorderCurve>& curves, const SheetOptions& options)
+{
+  const std::vector<int> found = convexEdgesBetween(boundary, generators, group);
+  const std::set<int> edges(found.begin(), found.end());
+  MedialSheetMesh mesh = interpolateSheet(boundary, generators, group.a, group.b, curves,
+    std::vector<int>(edges.begin(), edges.end()), options);
+  mesh.traced = group.traced;
+  return mesh;
+}
+
 std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
   const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures)
 {
@@ -1832,14 +1877,6 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   SheetOptions checked = options;
   if (!checked.exact)
     checked.exact = &exact;
-  auto build = [&](const SheetGroup& group, const std::vector<SheetBorderCurve>& curves) {
-    const std::vector<int> found = convexEdgesBetween(boundary, generators, group);
-    const std::set<int> edges(found.begin(), found.end());
-    MedialSheetMesh mesh = interpolateSheet(boundary, generators, group.a, group.b, curves,
-      std::vector<int>(edges.begin(), edges.end()), checked);
-    mesh.traced = group.traced;
-    return mesh;
-  };
   std::vector<MedialSheetMesh> out;
   std::vector<std::vector<SheetBorderCurve>> borders;
   std::vector<std::string> errors;
@@ -1864,7 +1901,7 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     errors.emplace_back();
     try
     {
-      out.push_back(build(group, curves));
+      out.push_back(interpolateSheet(boundary, generators, group, curves, checked));
     }
     catch (const InputError& e)
     {
@@ -1877,7 +1914,7 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
     borders.push_back(std::move(curves));
   }
   // Sheets no seam borders, found beyond the borders of those built.
-  addTransitionSheets(boundary, generators, groups, borders, out, errors, build);
+  addTransitionSheets(boundary, generators, groups, borders, out, errors, checked);
   for (size_t k = 0; k < errors.size(); ++k)
     if (!errors[k].empty())
       failures.emplace_back(static_cast<int>(k), errors[k]);

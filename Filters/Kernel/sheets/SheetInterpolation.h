@@ -116,6 +116,11 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
   const std::vector<int>& a, const std::vector<int>& b, const std::vector<SheetBorderCurve>& curves,
   const std::vector<int>& convexEdges, const SheetOptions& options = {});
 
+/// The sheet of a group (its two sides), bounded by `curves` and by the convex edges
+/// between its sides (convexEdgesBetween); the mesh's `traced` is the group's.
+MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const SheetGroup& group, const std::vector<SheetBorderCurve>& curves, const SheetOptions& options = {});
+
 /// Every sheet of a traced MAT: MAT3D::sheets grouped by their sides (sheetSide), each
 /// group's border from its seams' balls (ids: the ball's index along its seam) and convex
 /// edges. A sheet that cannot be interpolated is left empty (no triangles) and its reason

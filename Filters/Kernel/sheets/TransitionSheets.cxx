@@ -281,7 +281,7 @@ std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const 
 
 void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   std::vector<SheetGroup>& groups, std::vector<std::vector<SheetBorderCurve>>& borders,
-  std::vector<MedialSheetMesh>& meshes, std::vector<std::string>& errors, const SheetBuild& build)
+  std::vector<MedialSheetMesh>& meshes, std::vector<std::string>& errors, const SheetOptions& options)
 {
   constexpr int MaximumRounds = 8; // the cavities' sheets need two
   // Open: a reflex corner on one side, or found this way (then its border is only runs,
@@ -301,7 +301,7 @@ void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator
         MedialSheetMesh mesh;
         try
         {
-          mesh = build(sheet.group, sheet.curves);
+          mesh = interpolateSheet(boundary, generators, sheet.group, sheet.curves, options);
         }
         catch (const InputError&)
         {
@@ -311,7 +311,6 @@ void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator
           refused.push_back(sheet.group);
           continue;
         }
-        mesh.traced.clear();
         meshes.push_back(std::move(mesh));
         groups.push_back(sheet.group);
         borders.emplace_back();
@@ -329,9 +328,7 @@ void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator
         grown = true;
         try
         {
-          MedialSheetMesh mesh = build(groups[k], curves);
-          mesh.traced = groups[k].traced;
-          meshes[k] = std::move(mesh);
+          meshes[k] = interpolateSheet(boundary, generators, groups[k], curves, options);
           errors[k].clear();
         }
         catch (const InputError&)

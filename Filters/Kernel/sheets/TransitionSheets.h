@@ -14,7 +14,6 @@
 
 #include "sheets/SheetInterpolation.h"
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,16 +39,15 @@ std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const 
 
 /// The sheets of `groups`, built from `borders` (index for index: `meshes`, and `errors`
 /// empty or the reason it failed), completed: rounds of transitionSheets add the sheets
-/// found beyond their borders and build the open ones again with their neighbours' runs,
-/// until a round adds nothing (at most eight). `build` makes a sheet of a group from its
-/// border curves or throws InputError. A sheet found this way that does not close is left
-/// out, not failed — the tracer listed no such pair, and the runs that name it may be where
-/// two sheets meet along a curve with nothing between them (a staircase's exact
-/// coincidences); a real sheet left out leaves the faces it covers short, which the coverage
-/// check reports. An open sheet built again is kept as it was when that does not close.
-using SheetBuild = std::function<MedialSheetMesh(const SheetGroup&, const std::vector<SheetBorderCurve>&)>;
+/// found beyond their borders (interpolateSheet with `options`) and build the open ones
+/// again with their neighbours' runs, until a round adds nothing (at most eight). A sheet
+/// found this way that does not close is left out, not failed — the tracer listed no such
+/// pair, and the runs that name it may be where two sheets meet along a curve with nothing
+/// between them (a staircase's exact coincidences); a real sheet left out leaves the faces
+/// it covers short, which the coverage check reports. An open sheet built again is kept as
+/// it was when that does not close.
 void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   std::vector<SheetGroup>& groups, std::vector<std::vector<SheetBorderCurve>>& borders,
-  std::vector<MedialSheetMesh>& meshes, std::vector<std::string>& errors, const SheetBuild& build);
+  std::vector<MedialSheetMesh>& meshes, std::vector<std::string>& errors, const SheetOptions& options);
 
 } // namespace exactmat
