@@ -417,24 +417,66 @@ TEST(Sheets, ACavitysSheetsAreComplete)
   expectExactSheets(sheetsOf(patchPieces(makeShape("box-with-cavity").surfaces)), "catalogue box-with-cavity", 1e-9);
 }
 
-// The catalogue's cavity turned and moved: the same 58 sheets. The tracer lists pairs of an
-// outer face and a cavity wall perpendicular to it whose balls all touch one line of the
+// The catalogue's cavity turned and moved: the same 58 sheets. (1) The tracer lists pairs of
+// an outer face and a cavity wall perpendicular to it whose balls all touch one line of the
 // face (a sheet with no area); unturned their border lies exactly on that line and gave no
 // triangles, turned the rounding made its two sides cross ("boundary loops cross": 3 sheets
-// failed; far from the origin the faces were 8% short).
+// failed; far from the origin the faces were 8% short). (2) A cavity corner's sheet found
+// beyond its neighbours' borders whose first run starts a rounding's width before the arc
+// it follows (its loop turned straight back there and crossed itself) was left out for
+// good; it is now tried again with the runs later rounds bring, and such a step is dropped.
+// (3) Newton on the touch of a cavity edge from a far guess settled on θ = 0 a billion
+// turns round the edge (off its arc), so the corner where the border turns from the edge's
+// end onto its normal arc's end was not found and the sheet closed on itself with no area
+// (a cavity wall not covered at all). The bench's transformations 0, 3, 7 and 10 (turned
+// 0.05–1.05 rad, moved up to 1e6 × the size, scaled 1e±6, weights × 1e±100) failed so.
 TEST(Sheets, ACavitysSheetsDoNotDependOnWhereItSits)
 {
   const std::vector<PatchPiece> pieces = patchPieces(makeShape("box-with-cavity").surfaces);
   const Sheets plain = sheetsOf(pieces);
+  std::vector<std::pair<Placement, std::string>> placements;
   Placement turned;
   turned.rotation = Eigen::AngleAxisd(0.7, Vec3(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
-  Placement far = farFromTheOrigin();
-  far.rotation = Eigen::AngleAxisd(0.9, Vec3(1, 2, 3).normalized()).toRotationMatrix();
-  for (const auto& [placed, name] : { std::pair{ turned, "turned" }, { far, "turned, far from the origin" } })
+  placements.emplace_back(turned, "turned");
+  placements.emplace_back(farFromTheOrigin(), "far from the origin");
+  const double offsets[] = { 0.0, 1e3, 1e5, 1e6 }, scales[] = { 1.0, 1e-6, 1e6 }, weights[] = { 1.0, 1e-100, 1e100 };
+  for (int k : { 0, 3, 7, 10 })
   {
-    const Sheets s = sheetsOf(movedPieces(pieces, placed));
-    expectExactSheets(s, std::string("box-with-cavity ") + name, 1e-9);
+    Placement placed;
+    placed.rotation = Eigen::AngleAxisd(0.1 * k + 0.05, Vec3(1.0, 2.0 + 0.1 * k, 3.0).normalized()).toRotationMatrix();
+    placed.scale = scales[k % 3];
+    placed.offset = placed.scale * offsets[k % 4] * Vec3(1.0, -1.0, 1.0);
+    placed.weightFactor = weights[(k / 3) % 3];
+    placements.emplace_back(placed, "the bench's transformation " + std::to_string(k));
+  }
+  for (const auto& [placed, name] : placements)
+  {
+    const Sheets s = sheetsOf(movedPieces(pieces, placed), {}, true);
+    expectExactSheets(s, "box-with-cavity " + name, 1e-6);
     EXPECT_EQ(s.meshes.size(), plain.meshes.size()) << name;
+  }
+}
+
+// Random boxes with a box-shaped cavity (the bench's family, its first eight): complete and
+// exact, or refused by name (solid 7: a small cavity ringed by a seam loop nothing leads to).
+// Solid 1's sheet of the bottom face and a cavity edge closed each of its two seams on
+// itself (two slivers, the face 5% short) until a loop about to close on itself across
+// the sheet learnt to reach the other seam along the edge's sides; solid 5's sheet of an
+// outer wall and a cavity edge found no side of the edge's ends (the far end of each lies
+// where no ball touching the wall reaches: the edge's face normal there is the wall's) and
+// had no area (the wall 0.7% short).
+TEST(Sheets, RandomBoxCavitiesAreCompleteOrRefused)
+{
+  std::mt19937 rng(1);
+  for (int k = 0; k < 8; ++k)
+  {
+    const std::vector<PatchPiece> pieces = randomBoxWithCavity(rng);
+    if (k == 7)
+    {
+      EXPECT_THROW(sheetsOf(pieces), InputError) << "random cavity 7";
+      continue;
+    }
+    expectExactSheets(sheetsOf(pieces), "random cavity " + std::to_string(k), 1e-9);
   }
 }
 

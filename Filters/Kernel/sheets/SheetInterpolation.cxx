@@ -481,13 +481,17 @@ private:
     const Touch3D tp = Side[P].evaluate(qp);
     Vec2 qo = v.q[O];
     double r = v.r;
-    if (!newton(tp, qo, r))
+    auto inside = [&]() { return r >= -Touch && Side[O].exitSide(qo, parameterSlack(Side[O], r)) < 0; };
+    // Newton from the neighbour may settle on another branch of O's touch (a reflex edge's
+    // normal angle θ is periodic: from a guess at the far side of the arc it found θ = 0
+    // a billion turns away, off the arc): then from the bracketed radius.
+    if (!newton(tp, qo, r) || !inside())
     {
-      if (!bracket(tp, qo, r) || !newton(tp, qo, r))
+      qo = v.q[O];
+      r = v.r;
+      if (!bracket(tp, qo, r) || !newton(tp, qo, r) || !inside())
         return false;
     }
-    if (r < -Touch || Side[O].exitSide(qo, parameterSlack(Side[O], r)) >= 0)
-      return false;
     v.x = tp.point + r * tp.normal;
     v.r = std::max(r, 0.0);
     v.q[P] = qp;
@@ -708,7 +712,16 @@ private:
           double best = std::numeric_limits<double>::infinity();
           bool bestShares = false;
           std::vector<std::pair<int, int>> bestSides;
+          struct Candidate
+          {
+            double distance;
+            int piece;
+            bool reversed;
+            std::vector<std::pair<int, int>> sides;
+          };
+          std::vector<Candidate> candidates;
           auto consider = [&](const SheetVertex& v, const std::vector<std::pair<int, int>>& sides, int j, bool rev) {
+            candidates.push_back({ (v.domain - qe).norm(), j, rev, sides });
             bool shares = false;
             for (const auto& side : sides)
               shares = shares || std::find(endSides.begin(), endSides.end(), side) != endSides.end();
@@ -732,7 +745,51 @@ private:
             consider(pieces[j].front(), freeSides(backwards), static_cast<int>(j), false);
             consider(pieces[j].back(), freeSides(pieces[j]), static_cast<int>(j), true);
           }
-          const SheetVertex target = next < 0 ? loop.front() : (reversed ? pieces[next].back() : pieces[next].front());
+          auto endOf = [&](int j, bool rev) -> const SheetVertex& {
+            return j < 0 ? loop.front() : (rev ? pieces[j].back() : pieces[j].front());
+          };
+          auto arrivalAt = [&](int j, bool rev) {
+            return j < 0 ? arrival(loop.begin(), loop.end())
+                         : (rev ? arrival(pieces[j].rbegin(), pieces[j].rend()) : arrival(pieces[j].begin(), pieces[j].end()));
+          };
+          // A loop about to close on itself straight across the sheet (ends on different
+          // sides with no path of sheet points along sides between them, onto a chord of
+          // its own piece) while other pieces are free: rather the nearest of their ends a
+          // path along sides reaches. (The sheet of a face and a cavity's edge whose two
+          // seams each run from the edge's normal-arc end to one of its ends: each closed on
+          // itself, two slivers. A straight gap to another piece stays: two pieces of
+          // a surface of revolution's sheet meet across a cap's line.)
+          std::vector<SheetVertex> sidePath;
+          std::vector<std::pair<int, int>> chain;
+          if (!bestShares)
+            chain = curvedSideChain(endSides, bestSides);
+          std::vector<SheetVertex> around;
+          const bool aroundEdge = !bestShares && chain.empty() && aroundCurvedEdge(loop.back(), endOf(next, reversed), around);
+          if (!bestShares && chain.empty() && !aroundEdge)
+          {
+            const std::array<Vec2, 2> arrivals{ { arrival(loop.rbegin(), loop.rend()), arrivalAt(next, reversed) } };
+            sidePath = cornersBetween(loop.back(), endSides, endOf(next, reversed), bestSides, arrivals);
+            if (sidePath.empty() && next < 0)
+            {
+              std::sort(candidates.begin(), candidates.end(),
+                [](const Candidate& x, const Candidate& y) { return x.distance < y.distance; });
+              for (const Candidate& c : candidates)
+              {
+                if (c.piece < 0)
+                  continue;
+                std::vector<SheetVertex> path = cornersBetween(loop.back(), endSides, endOf(c.piece, c.reversed), c.sides,
+                  { { arrivals[0], arrivalAt(c.piece, c.reversed) } });
+                if (path.empty())
+                  continue;
+                next = c.piece;
+                reversed = c.reversed;
+                bestSides = c.sides;
+                sidePath = std::move(path);
+                break;
+              }
+            }
+          }
+          const SheetVertex target = endOf(next, reversed);
 #ifdef EXACTMAT_SHEET_DEBUG
           std::fprintf(stderr, "  gap from (%.6g %.6g %.6g) to (%.6g %.6g %.6g) piece %d shares %d; end sides:", end.x.x(),
             end.x.y(), end.x.z(), target.x.x(), target.x.y(), target.x.z(), next, (int)bestShares);
@@ -748,9 +805,6 @@ private:
           // Ends on two curved sides of one side's faces that a chain of its border sides
           // joins end to end (a revolved profile's reflex edge is an arc per quarter turn):
           // the border follows the chain, through the points where its sides meet.
-          std::vector<std::pair<int, int>> chain;
-          if (!bestShares)
-            chain = curvedSideChain(endSides, bestSides);
           if (!chain.empty())
             for (size_t k = 0; k + 1 < chain.size(); ++k)
             {
@@ -762,19 +816,15 @@ private:
               loop.push_back(corner);
               ++Mesh.gapVertices;
             }
-          else if (std::vector<SheetVertex> around; !bestShares && aroundCurvedEdge(loop.back(), target, around))
+          else if (aroundEdge)
             for (const SheetVertex& corner : around)
             {
               appendGap(loop, corner);
               loop.push_back(corner);
               ++Mesh.gapVertices;
             }
-          else if (!bestShares)
-            for (const SheetVertex& corner : cornersBetween(loop.back(), endSides, target, bestSides,
-                   { { arrival(loop.rbegin(), loop.rend()),
-                     next < 0 ? arrival(loop.begin(), loop.end())
-                              : (reversed ? arrival(pieces[next].rbegin(), pieces[next].rend())
-                                          : arrival(pieces[next].begin(), pieces[next].end())) } }))
+          else
+            for (const SheetVertex& corner : sidePath)
             {
               appendGap(loop, corner);
               loop.push_back(corner);
@@ -814,6 +864,7 @@ private:
           clean.push_back(v);
       while (clean.size() > 1 && (clean.back().domain - clean.front().domain).norm() <= slack(1e-9, 1e3) / Size)
         clean.pop_back();
+      withoutSpikes(clean);
       if (clean.size() < 3)
         continue; // a stretch that folds back on itself bounds no area
       loops.push_back(std::move(clean));
@@ -821,6 +872,36 @@ private:
     if (loops.empty())
       fail("3D MAT sheets: the border of ", name(), " encloses no area");
     return loops;
+  }
+
+  // A closed border that turns straight back over a step much shorter than the next (a run
+  // from a neighbour's border starting a rounding's width before the arc it follows: the
+  // turned cavity's corner sheets) crosses itself there and bounds nothing with that step:
+  // the vertex is dropped — or, when it is a seam's point (kept: the seams' points are
+  // shared with the seams), the short step's other end.
+  static void withoutSpikes(std::vector<SheetVertex>& loop)
+  {
+    for (size_t guard = loop.size(); guard > 0 && loop.size() >= 4; --guard)
+    {
+      const size_t n = loop.size();
+      size_t drop = n;
+      for (size_t i = 0; i < n && drop == n; ++i)
+      {
+        const size_t before = (i + n - 1) % n, after = (i + 1) % n;
+        const Vec2 in = loop[i].domain - loop[before].domain, out = loop[after].domain - loop[i].domain;
+        const double a = in.norm(), b = out.norm();
+        if (!(in.dot(out) < -0.99 * a * b) || std::min(a, b) > 0.05 * std::max(a, b))
+          continue;
+        const size_t across = a < b ? before : after; // the short step's other end
+        if (loop[i].source < 0)
+          drop = i;
+        else if (loop[across].source < 0)
+          drop = across;
+      }
+      if (drop == n)
+        return;
+      loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(drop));
+    }
   }
 
   // The face sides (generator, patch side) the last vertex of `run` touches its faces
@@ -922,7 +1003,9 @@ private:
         return false;
       const Vec2 w = y.p0 - x.p0;
       const double s = (w.x() * dy.y() - w.y() * dy.x()) / den, t = (w.x() * dx.y() - w.y() * dx.x()) / den;
-      if (s < -1e-9 || s > 1.0 + 1e-9 || t < -1e-9 || t > 1.0 + 1e-9)
+      // Sides meet at their ends: allow for where the input's rounding put them.
+      const double ds = std::max(1e-9, same / dx.norm()), dt = std::max(1e-9, same / dy.norm());
+      if (s < -ds || s > 1.0 + ds || t < -dt || t > 1.0 + dt)
         return false;
       // A corner at either end adds nothing (the path would run back along the end's own
       // side, enclosing no area).
@@ -1134,8 +1217,7 @@ private:
       const Generator3D& e = Side[O].first();
       const Vec2 ends[4][2] = { { Vec2(0, 0), Vec2(1, 0) }, { Vec2(0, e.edgeAngle(0)), Vec2(1, e.edgeAngle(1)) },
         { Vec2(0, 0), Vec2(0, e.edgeAngle(0)) }, { Vec2(1, 0), Vec2(1, e.edgeAngle(1)) } };
-      return side.first == edgeSideKey() && preimageOf(Side[O].evaluate(ends[side.second][0]), near, p0) &&
-        preimageOf(Side[O].evaluate(ends[side.second][1]), near, p1);
+      return side.first == edgeSideKey() && sidePreimage(ends[side.second][0], ends[side.second][1], near, p0, p1);
     }
     const BezierCurve curve = B.faces()[side.first].patch.side(side.second);
     auto onSide = [&side](const SheetSide& s) {
@@ -1151,6 +1233,47 @@ private:
       return true;
     }
     return onSide(Side[O]) && preimage(curve.startPoint(), near, p0) && preimage(curve.endPoint(), near, p1);
+  }
+
+  // P's parameters of the balls touching the reflex edge O at (t, θ) = a and b, the ends
+  // of a side of its parameters. An end no ball touching P reaches (the normal of an edge
+  // end's fan parallel to P's: a cavity's edge seen from the outer wall it faces away from)
+  // is replaced by the farthest point of the side towards it that one does (bisection):
+  // the side's line is the same, and balls beyond do not exist.
+  bool sidePreimage(const Vec2& a, const Vec2& b, const SheetVertex& near, Vec2& p0, Vec2& p1) const
+  {
+    auto reach = [&](const Vec2& q, const SheetVertex& from, Vec2& qp, double& r) {
+      return preimageOf(Side[O].evaluate(q), from, qp, &r) && r >= -Touch && r <= 4.0 * Size;
+    };
+    double r0 = 0.0, r1 = 0.0;
+    const bool first = reach(a, near, p0, r0), second = reach(b, near, p1, r1);
+    if (first == second)
+      return first;
+    const Vec2 good = first ? a : b, bad = first ? b : a;
+    SheetVertex from = near;
+    from.q[P] = first ? p0 : p1;
+    from.r = first ? r0 : r1;
+    Vec2 farthest = from.q[P];
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 40; ++k)
+    {
+      const double mid = 0.5 * (lo + hi);
+      Vec2 qp;
+      double r = 0.0;
+      if (reach(good + mid * (bad - good), from, qp, r))
+      {
+        lo = mid;
+        farthest = qp;
+        from.q[P] = qp;
+        from.r = r;
+      }
+      else
+        hi = mid;
+    }
+    if (lo <= 0.0)
+      return false;
+    (first ? p1 : p0) = farthest;
+    return true;
   }
 
   // P's parameters of the ball that touches O at its point e (along O's normal there).

@@ -66,6 +66,19 @@ public:
       }
       return out;
     }
+    if (first.kind() == GeneratorKind3D::ReflexCorner && members.size() == 1)
+    {
+      // The normal cone's border towards edge e is e's normal arc at its end (the normals
+      // perpendicular to e): a ball whose normal is there goes on as the edge's sheet.
+      if (v.r <= Near)
+        return out;
+      const Vec3 normal = (v.x - v.touch[k]) / v.r;
+      for (size_t i = 0; i < first.cornerEdges().size(); ++i)
+        if (auto edge = EdgeGenerator.find(first.cornerEdges()[i]);
+            edge != EdgeGenerator.end() && std::abs(normal.dot(first.cornerTangents()[i])) <= ParameterNear)
+          out.push_back(edge->second);
+      return out;
+    }
     if (first.kind() != GeneratorKind3D::Face)
       return out;
     const std::set<int> side(members.begin(), members.end());
@@ -133,8 +146,7 @@ bool inPlaneOf(const Boundary3D& boundary, const std::vector<Generator3D>& gener
 } // namespace
 
 std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
-  const std::vector<SheetGroup>& groups, const std::vector<bool>& open, const std::vector<MedialSheetMesh>& meshes,
-  const std::vector<SheetGroup>& refused)
+  const std::vector<SheetGroup>& groups, const std::vector<bool>& open, const std::vector<MedialSheetMesh>& meshes)
 {
   std::set<Pair> known;
   std::map<std::pair<std::vector<int>, std::vector<int>>, int> knownSides;
@@ -261,9 +273,7 @@ std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const 
   std::vector<TransitionSheet> out;
   for (const SheetGroup& group : groupSheets(boundary, generators, pairs))
   {
-    if (group.traced.empty() || std::any_of(refused.begin(), refused.end(), [&group](const SheetGroup& r) {
-          return r.a == group.a && r.b == group.b;
-        }))
+    if (group.traced.empty())
       continue;
     TransitionSheet sheet;
     sheet.group = { group.a, group.b, {} };
@@ -291,13 +301,17 @@ void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator
   for (size_t k = 0; k < groups.size(); ++k)
     open[k] = generators[groups[k].a.front()].kind() == GeneratorKind3D::ReflexCorner ||
       generators[groups[k].b.front()].kind() == GeneratorKind3D::ReflexCorner;
-  std::vector<SheetGroup> refused;
+  // Sides found and not built: the number of runs they were tried with.
+  std::map<std::pair<std::vector<int>, std::vector<int>>, size_t> refused;
   for (int round = 0; round < MaximumRounds; ++round)
   {
     bool grown = false;
-    for (const TransitionSheet& sheet : transitionSheets(boundary, generators, groups, open, meshes, refused))
+    for (const TransitionSheet& sheet : transitionSheets(boundary, generators, groups, open, meshes))
       if (sheet.extends < 0)
       {
+        const auto sides = std::make_pair(sheet.group.a, sheet.group.b);
+        if (auto tried = refused.find(sides); tried != refused.end() && tried->second >= sheet.curves.size())
+          continue;
         MedialSheetMesh mesh;
         try
         {
@@ -308,7 +322,7 @@ void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator
         }
         if (mesh.triangles.empty()) // failed, or runs that enclose nothing
         {
-          refused.push_back(sheet.group);
+          refused[sides] = sheet.curves.size();
           continue;
         }
         meshes.push_back(std::move(mesh));

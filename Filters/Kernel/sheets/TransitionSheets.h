@@ -31,11 +31,9 @@ struct TransitionSheet
 /// whose sides are not among `groups`, and those among them marked `open` (sheets that take
 /// their neighbours' runs: found this way before, or with a reflex corner on one side, whose
 /// border where it goes on as an edge's sheet is a curve its own gap closing does not
-/// follow), each with every border run that names it. Sides in `refused` (found before and
-/// not built) are not offered again.
+/// follow), each with every border run that names it.
 std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
-  const std::vector<SheetGroup>& groups, const std::vector<bool>& open, const std::vector<MedialSheetMesh>& meshes,
-  const std::vector<SheetGroup>& refused = {});
+  const std::vector<SheetGroup>& groups, const std::vector<bool>& open, const std::vector<MedialSheetMesh>& meshes);
 
 /// The sheets of `groups`, built from `borders` (index for index: `meshes`, and `errors`
 /// empty or the reason it failed), completed: rounds of transitionSheets add the sheets
@@ -44,8 +42,10 @@ std::vector<TransitionSheet> transitionSheets(const Boundary3D& boundary, const 
 /// found this way that does not close is left out, not failed — the tracer listed no such
 /// pair, and the runs that name it may be where two sheets meet along a curve with nothing
 /// between them (a staircase's exact coincidences); a real sheet left out leaves the faces
-/// it covers short, which the coverage check reports. An open sheet built again is kept as
-/// it was when that does not close.
+/// it covers short, which the coverage check reports. A sheet left out is tried again when
+/// a later round brings it more runs (its first run alone may not close it: a turned
+/// solid's rounding made the loops of a cavity corner's sheet cross). An open sheet built
+/// again is kept as it was when that does not close.
 void addTransitionSheets(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   std::vector<SheetGroup>& groups, std::vector<std::vector<SheetBorderCurve>>& borders,
   std::vector<MedialSheetMesh>& meshes, std::vector<std::string>& errors, const SheetOptions& options);
