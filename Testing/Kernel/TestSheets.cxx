@@ -457,20 +457,25 @@ TEST(Sheets, ACavitysSheetsDoNotDependOnWhereItSits)
   }
 }
 
-// Random boxes with a box-shaped cavity (the bench's family, its first eight): complete and
-// exact, or refused by name (solid 7: a small cavity ringed by a seam loop nothing leads to).
+// Random boxes with a box-shaped cavity (the bench's family: its first eight and the 16th):
+// complete and exact, or refused by name (solid 7: a small cavity ringed by a seam loop
+// nothing leads to).
 // Solid 1's sheet of the bottom face and a cavity edge closed each of its two seams on
 // itself (two slivers, the face 5% short) until a loop about to close on itself across
 // the sheet learnt to reach the other seam along the edge's sides; solid 5's sheet of an
 // outer wall and a cavity edge found no side of the edge's ends (the far end of each lies
 // where no ball touching the wall reaches: the edge's face normal there is the wall's) and
-// had no area (the wall 0.7% short).
+// had no area (the wall 0.7% short). Solid 15 has a small sheet of an outer face and a
+// cavity edge found only where a cavity corner's sheet reaches that edge's normal arc (5e-7
+// of a face short without it).
 TEST(Sheets, RandomBoxCavitiesAreCompleteOrRefused)
 {
   std::mt19937 rng(1);
-  for (int k = 0; k < 8; ++k)
+  for (int k = 0; k < 16; ++k)
   {
     const std::vector<PatchPiece> pieces = randomBoxWithCavity(rng);
+    if (k >= 8 && k != 15)
+      continue;
     if (k == 7)
     {
       EXPECT_THROW(sheetsOf(pieces), InputError) << "random cavity 7";
