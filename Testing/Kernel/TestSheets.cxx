@@ -467,14 +467,17 @@ TEST(Sheets, ACavitysSheetsDoNotDependOnWhereItSits)
 // where no ball touching the wall reaches: the edge's face normal there is the wall's) and
 // had no area (the wall 0.7% short). Solid 15 has a small sheet of an outer face and a
 // cavity edge found only where a cavity corner's sheet reaches that edge's normal arc (5e-7
-// of a face short without it).
+// of a face short without it). Solids 13 and 32: a seam crossing from a cavity corner onto
+// the edge ending there one step before a junction gave that stretch no sheet of the edge
+// (13: an open end that could not be closed, a face 0.4% short; 32: a border that closed on
+// a line, "encloses no area").
 TEST(Sheets, RandomBoxCavitiesAreCompleteOrRefused)
 {
   std::mt19937 rng(1);
-  for (int k = 0; k < 16; ++k)
+  for (int k = 0; k < 33; ++k)
   {
     const std::vector<PatchPiece> pieces = randomBoxWithCavity(rng);
-    if (k >= 8 && k != 15)
+    if (k >= 8 && k != 13 && k != 15 && k != 32)
       continue;
     if (k == 7)
     {

@@ -90,6 +90,7 @@ private:
   int contactCount(const MedialBall3D& ball) const;
   std::vector<std::pair<Vec3, std::vector<int>>> contactGenerators(const MedialBall3D& ball) const;
   std::set<std::pair<int, int>> sheetPairs(const MAT3DSeam& seam, size_t b) const;
+  std::set<std::pair<int, int>> stretchPairs(const MAT3DSeam& seam, size_t b) const;
   int sheetGenerator(const MedialBall3D& ball, const Vec3& point, int g, const Vec3& w) const;
   int cornerOrEdge(const MedialBall3D& ball, int i, const Vec3& w) const;
   bool onAnotherTouchFace(const MedialBall3D& ball, int i, int g) const;
@@ -1338,6 +1339,37 @@ std::set<std::pair<int, int>> Tracer::sheetPairs(const MAT3DSeam& seam, size_t b
   return adjacent;
 }
 
+// The pairs bordering the stretch from ball b to ball b + 1 of a three-touch seam inside
+// it, where each touch that moves has left its entity's border: a seam that crosses from a
+// reflex corner onto the edge ending there, one step before a junction, has no ball inside
+// that stretch, and at its first ball (the touch at the edge's end) the sheet beside it
+// can lean onto the corner (random cavity 32: the sheet of an outer wall and a cavity edge
+// lost that stretch, and its border closed on a line). A touch that stays at the vertex
+// (an arc about a reflex corner) keeps the pairing of its balls.
+std::set<std::pair<int, int>> Tracer::stretchPairs(const MAT3DSeam& seam, size_t b) const
+{
+  std::set<std::pair<int, int>> pairs;
+  if (seam.touchpoints > 3 || b + 1 >= seam.balls.size())
+    return pairs;
+  const MedialBall3D& ball = seam.balls[b];
+  const MedialBall3D& next = seam.balls[b + 1];
+  const double same = std::max(1e-9 * Size, 1e3 * Degenerate);
+  bool moved[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const auto at = std::find(next.generators.begin(), next.generators.end(), ball.generators[i]);
+    if (at == next.generators.end())
+      return pairs; // the triplet changes: the stretch is the next ball's
+    const Generator3D& gen = Generators[ball.generators[i]];
+    moved[i] = (gen.evaluate(ball.q[i]).point - gen.evaluate(next.q[at - next.generators.begin()]).point).norm() > same;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (moved[i] && moved[j])
+        pairs.insert(std::minmax(ball.generators[i], ball.generators[j]));
+  return pairs;
+}
+
 // A three-touch seam's touch i on a reflex edge at its end where a reflex corner is (the
 // normal, normal to the edge, on the border of the corner's cone), or on the corner with its
 // normal on that border: the seam (an arc around a staircase's low corner cell, between
@@ -1435,8 +1467,12 @@ void Tracer::collectSheets()
     const MAT3DSeam& seam = Result.seams[s];
     for (size_t b = 0; b < seam.balls.size(); ++b)
       if (seam.balls[b].size() == 3)
+      {
         for (const auto& pair : sheetPairs(seam, b))
           pairs.insert(pair);
+        for (const auto& pair : stretchPairs(seam, b))
+          pairs.insert(pair);
+      }
     for (const auto& p : pairs)
     {
       MAT3DSheet& sheet = sheets[p];
