@@ -103,6 +103,10 @@ private:
   int addNode(const MedialBall3D& ball, int vertex, double merge = 0.0);
   int findNode(const Vec3& x, double merge = 0.0) const;
   void startFrom(int node);
+  MedialBall3D grownBall(int g, const Vec3& point, const Vec3& normal) const;
+  std::vector<int> othersTouching(const MedialBall3D& ball) const;
+  bool onTracedSeam(const MedialBall3D& ball) const;
+  bool restartFrom(int face);
   bool outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
   void trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints);
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
@@ -139,6 +143,8 @@ private:
   std::vector<bool> Reached; // faces some seam has touched (for progress)
   int ReachedCount = 0;
   std::vector<int> Queue;
+  int RestartNode = -1;     // the seam point a restart traces from (not a node of the MAT)
+  std::set<int> Spliced;    // restart points whose two seams became one
 };
 
 std::string Tracer::describe(const MedialBall3D& ball) const
@@ -494,6 +500,8 @@ int Tracer::findNode(const Vec3& x, double merge) const
   double nearest = Unbounded;
   for (size_t n = 0; n < Result.nodes.size(); ++n)
   {
+    if (static_cast<int>(n) == RestartNode || Spliced.count(static_cast<int>(n)))
+      continue;
     const double d = (Result.nodes[n].ball.x - x).norm();
     if (d <= (Result.nodes[n].imprecise ? std::max(within, 1e-5 * Size) : within) && d < nearest)
     {
@@ -971,8 +979,21 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         fail("3D MAT: the seam through ", describe(ball), " could not be ended at radius 0");
       const int node = findNode(v.x);
       if (node < 0 || Result.nodes[node].vertex < 0)
+      {
+        // A touch that leaves its entity on the way (a cavity wall's touch crossing the
+        // wall's edge while the ball shrinks towards an outer convex edge) is crossed
+        // first: the seam goes on with the entity beyond, at a shorter step.
+        bool leaves = false;
+        for (int i = 0; i < 3 && !leaves; ++i)
+          leaves = Generators[v.generators[i]].exitSide(v.q[i], OnEntity) >= 0;
+        if (leaves && h > 1e-9 * Size)
+        {
+          h *= 0.5;
+          continue;
+        }
         fail("3D MAT: the seam through ", describe(ball), " reaches radius 0 at ", format(B.userPoint(v.x)),
           ", which is not a convex vertex");
+      }
       seam.balls.push_back(v);
       endNode = node;
       break;
@@ -1151,6 +1172,18 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         Result.nodes[endNode].imprecise = true;
       seam.balls.push_back(last);
       break;
+    }
+    // A seam traced from a restart point (no node) that comes round to it is a closed loop.
+    if (startNode == RestartNode && seam.balls.size() > 2)
+    {
+      const Vec3 a = ball.x, chord = next.x - ball.x, start = Result.nodes[startNode].ball.x;
+      const double s = chord.squaredNorm() > 0.0 ? std::clamp((start - a).dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
+      if ((a + s * chord - start).norm() <= 2.0 * tol + NodeMerge)
+      {
+        seam.balls.push_back(seam.balls.front());
+        endNode = startNode;
+        break;
+      }
     }
 #ifdef EXACTMAT_TRACE3D_DEBUG
     std::fprintf(stderr, "  step h %.3g to %s; exits", h, describe(next).c_str());
@@ -1606,6 +1639,229 @@ bool Tracer::departed(int node, const Vec3& direction, const MedialBall3D& tripl
   return false;
 }
 
+// The largest empty ball touching generator g at `point`, its centre along `normal` (into
+// the material): the shrinking ball, by bisection on the exact emptiness test.
+MedialBall3D Tracer::grownBall(int g, const Vec3& point, const Vec3& normal) const
+{
+  const Generator3D& gen = Generators[g];
+  MedialBall3D ball;
+  ball.generators = { g };
+  ball.q = { gen.kind() == GeneratorKind3D::Face ? gen.parameterOf(point) : gen.touchParameter(point, point + normal) };
+  double lo = 0.0, hi = Size;
+  for (int k = 0; k < 200 && hi - lo > 1e-14 * Size; ++k)
+  {
+    ball.r = 0.5 * (lo + hi);
+    ball.x = point + ball.r * normal;
+    (empty(ball) ? lo : hi) = ball.r;
+  }
+  ball.r = lo;
+  ball.x = point + lo * normal;
+  return ball;
+}
+
+// The generators touching a grown ball besides its own (sorted; one per contact).
+std::vector<int> Tracer::othersTouching(const MedialBall3D& ball) const
+{
+  const Vec3 own = Generators[ball.generators[0]].evaluate(ball.q[0]).point;
+  std::vector<int> others;
+  for (const auto& [point, generators] : contactGenerators(ball))
+    if (!sameContact(ball, point, own) && (point - own).norm() > 1e-7 * Size)
+      others.push_back(generators.front());
+  std::sort(others.begin(), others.end());
+  return others;
+}
+
+// A ball on a seam already traced (within the seams' own chord tolerance).
+bool Tracer::onTracedSeam(const MedialBall3D& ball) const
+{
+  for (const MAT3DSeam& seam : Result.seams)
+    for (size_t i = 0; i + 1 < seam.balls.size(); ++i)
+    {
+      const Vec3 a = seam.balls[i].x, e = seam.balls[i + 1].x - a;
+      const double s = e.squaredNorm() > 0.0 ? std::clamp((ball.x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      if ((a + s * e - ball.x).norm() <= 10.0 * Options.tolerance * Size)
+        return true;
+    }
+  return false;
+}
+
+// Seams no convex vertex leads to (a ring of seams about a small cavity inside a sheet,
+// thesis §6.5.1's restart): balls grown from points of a face no seam touches, walked from
+// its middle to its border and on round a reflex edge there (the normal turning from this
+// face's to the next one's), touch one other entity each until, between two of them, the
+// entity changes; there a ball touches three, which Newton puts on their seam. The seam is
+// traced both ways from that point and the two halves joined into one; the junctions it
+// reaches start the rest as usual. False when no walk finds a seam not traced yet.
+bool Tracer::restartFrom(int face)
+{
+  const int samples = 16;
+  const Generator3D& own = Generators[face];
+  const BezierPatch& patch = B.faces()[face].patch;
+  // Walks: the four directions to the middles of the sides, then the four diagonals.
+  const std::array<std::array<double, 2>, 8> directions{ { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 }, { 1, 1 },
+    { -1, -1 }, { 1, -1 }, { -1, 1 } } };
+  const std::array<int, 4> sideOf{ { 1, 3, 2, 0 } }; // the side each of the first four reaches
+  for (size_t w = 0; w < directions.size(); ++w)
+  {
+    const auto& d = directions[w];
+    const double reach = 0.5 * (1.0 - 1e-9);
+    auto onFace = [&](double s) {
+      const Vec3 p = patch.evaluate(0.5 + d[0] * reach * s, 0.5 + d[1] * reach * s);
+      return grownBall(face, p, own.evaluate(own.parameterOf(p)).normal);
+    };
+    std::vector<std::function<MedialBall3D(double)>> legs{ onFace };
+    // Round the reflex edge at the side reached: the normal from this face's to the next's.
+    const auto side = w < 4 ? SideEdge.find({ face, sideOf[w] }) : SideEdge.end();
+    if (side != SideEdge.end() && EdgeGenerator[side->second] >= 0)
+    {
+      const Edge3D& edge = B.edges()[side->second];
+      const int next = edge.faceA == face ? edge.faceB : edge.faceA;
+      const Vec3 p = patch.evaluate(0.5 + d[0] * 0.5, 0.5 + d[1] * 0.5);
+      const Vec3 from = own.evaluate(own.parameterOf(p)).normal;
+      const Vec3 to = Generators[next].evaluate(Generators[next].parameterOf(p)).normal;
+      const int g = EdgeGenerator[side->second];
+      legs.push_back([this, g, p, from, to](double s) {
+        const double t = 1e-6 + (1.0 - 2e-6) * s;
+        return grownBall(g, p, ((1.0 - t) * from + t * to).normalized());
+      });
+    }
+    for (const auto& leg : legs)
+    {
+      double s0 = 0.0;
+      MedialBall3D before = leg(0.0);
+      std::vector<int> seen = othersTouching(before);
+      bool found = false;
+      MedialBall3D at;
+      std::vector<int> now;
+      for (int k = 1; k <= samples && !found; ++k)
+      {
+        const double s1 = static_cast<double>(k) / samples;
+        const MedialBall3D after = leg(s1);
+        now = othersTouching(after);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+        std::fprintf(stderr, "restart face %d walk %zu s %g: %s; others", face, w, s1, describe(after).c_str());
+        for (int o : now)
+          std::fprintf(stderr, " %d", o);
+        std::fprintf(stderr, "\n");
+#endif
+        if (seen.size() == 1 && now.size() == 1 && seen != now)
+        {
+          // Bisect the walk for where the other entity changes: a ball touching both.
+          double lo = s0, hi = s1;
+          at = after;
+          for (int b = 0; b < 50; ++b)
+          {
+            const double mid = 0.5 * (lo + hi);
+            const MedialBall3D m = leg(mid);
+            if (othersTouching(m) == seen)
+              lo = mid;
+            else
+            {
+              hi = mid;
+              at = m;
+            }
+          }
+          found = true;
+          break;
+        }
+        s0 = s1;
+        seen = now;
+      }
+      if (!found)
+        continue;
+      MedialBall3D seamBall;
+      seamBall.generators = { at.generators[0], seen.front(), now.front() };
+      seamBall.q = { at.q[0] };
+      for (int g : { seen.front(), now.front() })
+      {
+        const Generator3D& gen = Generators[g];
+        const Vec3 foot = gen.nearestPoint(at.x);
+        seamBall.q.push_back(gen.kind() == GeneratorKind3D::Face ? gen.parameterOf(foot) : gen.touchParameter(foot, at.x));
+      }
+      seamBall.x = at.x;
+      seamBall.r = at.r;
+      bool inside = System.correct(seamBall, Solve) && (seamBall.x - at.x).norm() <= 1e-4 * Size && empty(seamBall);
+      for (int i = 0; i < 3 && inside; ++i)
+        inside = Generators[seamBall.generators[i]].exitSide(seamBall.q[i], OnEntity) < 0;
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "restart seam ball %s inside %d contacts %d traced %d\n", describe(seamBall).c_str(), (int)inside,
+        contactCount(seamBall), (int)onTracedSeam(seamBall));
+#endif
+      if (!inside || contactCount(seamBall) != 3 || onTracedSeam(seamBall))
+        continue; // a seam known (or none): the next walk
+      double separation = 1.0;
+      const Eigen::VectorXd t = System.tangent(seamBall, &separation);
+      if (separation > 1e-6)
+        continue;
+      // A restart that fails leaves the trace as it was (the check after the restarts then
+      // reports the face, or its sheets' coverage does).
+      const MAT3D saved = Result;
+      const std::vector<int> savedQueue = Queue;
+      const auto savedTraced = Traced;
+      const auto savedDepartures = Departures;
+      auto restore = [&]() {
+        Result = saved;
+        Queue = savedQueue;
+        Traced = savedTraced;
+        Departures = savedDepartures;
+        RestartNode = -1;
+      };
+      MAT3DNode point;
+      point.ball = seamBall;
+      Result.nodes.push_back(point);
+      RestartNode = static_cast<int>(Result.nodes.size()) - 1;
+      const size_t first = Result.seams.size();
+      bool loop = false;
+      try
+      {
+        trace(RestartNode, seamBall, t, 3);
+        loop = Result.seams.size() > first && Result.seams.back().endNode == RestartNode;
+        if (!loop)
+          trace(RestartNode, seamBall, -t, 3);
+      }
+      catch (const InputError&)
+      {
+        restore();
+        continue;
+      }
+      const int restart = RestartNode;
+      RestartNode = -1;
+      if (loop)
+      {
+        Result.nodes[restart].loopPoint = true; // a closed seam through the restart point
+        return true;
+      }
+      std::vector<int> halves;
+      for (size_t i = first; i < Result.seams.size(); ++i)
+        if (Result.seams[i].startNode == restart)
+          halves.push_back(static_cast<int>(i));
+      if (halves.size() != 2)
+      {
+        restore();
+        continue;
+      }
+      // One seam from the far end of the first half to the far end of the second.
+      const MAT3DSeam& a = Result.seams[halves[0]];
+      const MAT3DSeam& b = Result.seams[halves[1]];
+      MAT3DSeam joined;
+      joined.touchpoints = 3;
+      joined.balls.assign(a.balls.rbegin(), a.balls.rend());
+      joined.balls.insert(joined.balls.end(), b.balls.begin() + 1, b.balls.end());
+      joined.balls.front().generators.resize(3); // the arriving triplet, as a seam's start
+      joined.balls.front().q.resize(3);
+      joined.faces = { joined.balls.front().generators[0], joined.balls.front().generators[1],
+        joined.balls.front().generators[2] };
+      joined.startNode = a.endNode;
+      joined.endNode = b.endNode;
+      Result.seams[halves[0]] = std::move(joined);
+      Result.seams.erase(Result.seams.begin() + halves[1]);
+      Spliced.insert(restart);
+      return true;
+    }
+  }
+  return false;
+}
+
 MAT3D Tracer::run()
 {
   for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
@@ -1629,8 +1885,9 @@ MAT3D Tracer::run()
   }
   if (Result.nodes.empty())
     fail("3D MAT: the solid has no convex vertex: starting elsewhere is not supported yet");
-  for (size_t i = 0; i < Queue.size(); ++i)
-    startFrom(Queue[i]);
+  size_t started = 0;
+  for (; started < Queue.size(); ++started)
+    startFrom(Queue[started]);
   // Every face bounds some sheet, and (for the solids traced here) every sheet has a seam
   // on its border: a face no seam touches means a part of the MAT this tracer cannot
   // reach yet (sheets bounded only by circles of contact, rims or skeletal edges: the
@@ -1646,11 +1903,29 @@ MAT3D Tracer::run()
     if (e.kind == VertexKind::Smooth)
       group[root(e.faceA)] = root(e.faceB);
   std::vector<bool> touched(faces, false);
-  for (const MAT3DSeam& seam : Result.seams)
-    for (const MedialBall3D& ball : seam.balls)
-      for (int g : ball.generators)
-        for (int f : Generators[g].faces())
-          touched[root(f)] = true;
+  auto markTouched = [&]() {
+    for (const MAT3DSeam& seam : Result.seams)
+      for (const MedialBall3D& ball : seam.balls)
+        for (int g : ball.generators)
+          for (int f : Generators[g].faces())
+            touched[root(f)] = true;
+  };
+  markTouched();
+  // A face no seam touches yet is tried once as a restart (each finds one seam; the
+  // junctions on it lead to the others). Polyhedra only: a grown ball that comes near a
+  // curved face tangentially (a hole's cylinder, a fillet) costs the exact emptiness test
+  // seconds of subdivision per ball (a bracket with round holes: 77 s of restarts that
+  // found nothing) — and such solids' missing seams are mostly rims and circles of contact,
+  // which are not traced yet anyway.
+  const bool polyhedron = std::all_of(Generators.begin(), Generators.begin() + faces,
+    [](const Generator3D& g) { return g.polygon(); });
+  for (int f = 0; f < faces && polyhedron; ++f)
+    if (!touched[root(f)] && root(f) == f && restartFrom(f))
+    {
+      for (; started < Queue.size(); ++started)
+        startFrom(Queue[started]);
+      markTouched();
+    }
   // A planar face bounded by reflex edges only (a cavity's or pocket's wall) is exempt when
   // seams reach its shell: its sheets are bounded where their touch reaches those edges and
   // go on as the edges' sheets, which the sheet interpolator finds from the traced ones
@@ -1695,7 +1970,7 @@ MAT3D Tracer::run()
   }
   std::vector<MAT3DNode> kept;
   for (size_t n = 0; n < Result.nodes.size(); ++n)
-    if (seamsAt[n] > 0 || Result.nodes[n].vertex < 0)
+    if (seamsAt[n] > 0 || (Result.nodes[n].vertex < 0 && !Spliced.count(static_cast<int>(n))))
     {
       renumber[n] = static_cast<int>(kept.size());
       kept.push_back(std::move(Result.nodes[n]));
@@ -1772,12 +2047,18 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
     // degenerate seam, along which all four keep touching, stands for several of them: then
     // at least two); a seam's end on a rim joins one seam and one rim; a vertex starts at
     // least one.
-    const int expected = node.vertex >= 0 || degenerate[n] ? -1 : node.seamEnd ? 2 : node.touchpoints == 4 ? 4 : -1;
+    const int expected = node.vertex >= 0 || degenerate[n] ? -1
+      : node.seamEnd || node.loopPoint                    ? 2
+      : node.touchpoints == 4                             ? 4
+                                                          : -1;
     const bool wrong = node.vertex >= 0 ? degree[n] < 1
       : expected > 0                    ? degree[n] != expected
                                         : degree[n] < (degenerate[n] ? 2 : 4);
     if (wrong)
-      problems.push_back(std::string(node.vertex >= 0 ? "the vertex" : node.seamEnd ? "the seam end" : "the junction") +
+      problems.push_back(std::string(node.vertex >= 0 ? "the vertex"
+            : node.seamEnd                             ? "the seam end"
+            : node.loopPoint                           ? "the closed seam's point"
+                                                       : "the junction") +
         " at " + format(toUser(node.ball.x)) + " meets " + std::to_string(degree[n]) + " seams or rims" +
         (expected > 0 ? ", " + std::to_string(expected) + " expected" : ""));
   }
@@ -1787,7 +2068,7 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
 int MAT3D::junctionCount() const
 {
   return static_cast<int>(
-    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd; }));
+    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd && !n.loopPoint; }));
 }
 
 MedialComplex MAT3D::complex() const
@@ -1798,11 +2079,13 @@ MedialComplex MAT3D::complex() const
     MedialPoint3D p;
     p.x = n.ball.x;
     p.radius = n.ball.r;
-    p.type = n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd : MedialPoint3DType::Junction;
+    p.type = n.loopPoint                ? MedialPoint3DType::Seam
+      : n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd
+                                   : MedialPoint3DType::Junction;
     p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
     p.touches = n.ball.touches;
     c.points.push_back(p);
-    if (n.vertex < 0 && !n.seamEnd)
+    if (n.vertex < 0 && !n.seamEnd && !n.loopPoint)
     {
       MedialElement e;
       e.type = MedialElementType::Junction;

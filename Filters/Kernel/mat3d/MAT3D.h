@@ -61,6 +61,9 @@ struct MAT3DNode
   /// A seam's end where two of its touchpoints merge at a vertex of the solid: the seam
   /// meets the skeletal edge (rim) of the sheet between those two generators there.
   bool seamEnd = false;
+  /// Where a closed seam that meets no junction starts and ends (a ring of seams about a
+  /// small cavity inside a sheet, found by a restart): a point of that seam, not a junction.
+  bool loopPoint = false;
   /// Located only to about the square root of the rounding (where a degenerate seam loses a
   /// contact tangentially): a junction reached later within 1e-5 of the size is this one.
   bool imprecise = false;
