@@ -498,23 +498,54 @@ TEST(Sheets, RandomBoxCavitiesAreComplete)
 
 // A small cavity inside a plate's mid-sheet: the seams around it form a ring nothing leads
 // to from the convex vertices. Refused ("no seam touches face 6") until the tracer learnt to
-// restart from a face no seam touches: balls grown from the cavity's walls, walked round a
-// wall's edge until the entity across changes, find a seam of the ring. Now the seams, the
-// ring's junctions and every sheet, the cavity's faces covered.
+// restart from a face no seam touches: balls grown from the cavity's faces, walked to a
+// face's border and round the edge there until the entity across changes (or a ball already
+// touches two: a wall's middle equidistant from the plate's faces), find a seam of the ring.
+// Now the seams, the ring (a closed seam, its restart point no junction) and every sheet,
+// the cavity's faces covered: the cavity above the mid-plane, on it, centred (every mirror
+// symmetry kept), turned about z, tilted, a tetrahedral one, two cavities.
 TEST(Sheets, ASmallCavityInsideAPlatesMidSheetIsFoundByARestart)
 {
-  std::vector<PatchPiece> plate = boxPolyhedron(2.0, 1.8, 0.55);
-  for (const PatchPiece& p :
-    movedPieces(boxPolyhedron(0.13, 0.16, 0.08), Eigen::Matrix3d::Identity(), 1.0, Vec3(-0.16, 0.11, 0.28)))
-    plate.push_back(p);
-  const Sheets s = sheetsOf(plate);
-  const std::vector<std::string> problems = s.mat.topologyProblems([](const Vec3& x) { return x; });
-  EXPECT_TRUE(problems.empty()) << problems.front();
-  const PatchBoundary exact(*s.boundary);
-  const MedialVerification v = verifyMedialComplex(exact, s.mat.complex(), 1, 1e-15);
-  EXPECT_LE(v.maxDistanceError, 1e-9);
-  EXPECT_EQ(v.contactMismatches, 0);
-  expectExactSheets(s, "a small cavity inside a plate's mid-sheet", 1e-9);
+  const std::vector<PatchPiece> box = boxPolyhedron(0.13, 0.16, 0.08);
+  const std::vector<PatchPiece> tetrahedron = polyhedron({ Vec3(0.1, 0.1, 0.1), Vec3(0.1, -0.1, -0.1),
+                                                            Vec3(-0.1, 0.1, -0.1), Vec3(-0.1, -0.1, 0.1) },
+    { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } });
+  auto with = [](std::vector<PatchPiece> solid, const std::vector<PatchPiece>& cavity, const Eigen::Matrix3d& turn,
+                const Vec3& at) {
+    int next = 0;
+    for (const PatchPiece& p : solid)
+      next = std::max(next, p.entity + 1);
+    for (PatchPiece p : movedPieces(cavity, turn, 1.0, at))
+    {
+      p.entity += next;
+      solid.push_back(std::move(p));
+    }
+    return solid;
+  };
+  const std::vector<PatchPiece> plate = boxPolyhedron(2.0, 1.8, 0.55);
+  const Eigen::Matrix3d same = Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d aboutZ = Eigen::AngleAxisd(0.4, Vec3::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d tilted = Eigen::AngleAxisd(0.3, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+  const std::vector<std::pair<std::string, std::vector<PatchPiece>>> solids{
+    { "above the mid-plane", with(plate, box, same, Vec3(-0.16, 0.11, 0.28)) },
+    { "on the mid-plane", with(plate, box, same, Vec3(0.3, -0.2, 0.0)) },
+    { "centred", with(plate, box, same, Vec3::Zero()) },
+    { "turned about z", with(plate, box, aboutZ, Vec3(-0.16, 0.11, 0.05)) },
+    { "tilted", with(plate, box, tilted, Vec3(0.2, 0.1, 0.05)) },
+    { "a tetrahedron", with(plate, tetrahedron, same, Vec3(0.1, 0.2, 0.0)) },
+    { "two", with(with(plate, box, same, Vec3(-0.9, 0.11, 0.05)), box, same, Vec3(0.8, -0.5, -0.03)) },
+  };
+  for (const auto& [name, pieces] : solids)
+  {
+    const Sheets s = sheetsOf(pieces);
+    const std::vector<std::string> problems = s.mat.topologyProblems([](const Vec3& x) { return x; });
+    EXPECT_TRUE(problems.empty()) << name << ": " << problems.front();
+    const PatchBoundary exact(*s.boundary);
+    const MedialVerification v = verifyMedialComplex(exact, s.mat.complex(), 1, 1e-15);
+    EXPECT_LE(v.maxDistanceError, 1e-9) << name;
+    EXPECT_EQ(v.contactMismatches, 0) << name;
+    expectExactSheets(s, "a small cavity inside a plate's mid-sheet, " + name, 1e-9);
+  }
 }
 
 // The same swept solid through the 2.5D construction (exact swept sheets) and through the

@@ -1725,56 +1725,14 @@ bool Tracer::restartFrom(int face)
         return grownBall(g, p, ((1.0 - t) * from + t * to).normalized());
       });
     }
-    for (const auto& leg : legs)
-    {
-      double s0 = 0.0;
-      MedialBall3D before = leg(0.0);
-      std::vector<int> seen = othersTouching(before);
-      bool found = false;
-      MedialBall3D at;
-      std::vector<int> now;
-      for (int k = 1; k <= samples && !found; ++k)
-      {
-        const double s1 = static_cast<double>(k) / samples;
-        const MedialBall3D after = leg(s1);
-        now = othersTouching(after);
-#ifdef EXACTMAT_TRACE3D_DEBUG
-        std::fprintf(stderr, "restart face %d walk %zu s %g: %s; others", face, w, s1, describe(after).c_str());
-        for (int o : now)
-          std::fprintf(stderr, " %d", o);
-        std::fprintf(stderr, "\n");
-#endif
-        if (seen.size() == 1 && now.size() == 1 && seen != now)
-        {
-          // Bisect the walk for where the other entity changes: a ball touching both.
-          double lo = s0, hi = s1;
-          at = after;
-          for (int b = 0; b < 50; ++b)
-          {
-            const double mid = 0.5 * (lo + hi);
-            const MedialBall3D m = leg(mid);
-            if (othersTouching(m) == seen)
-              lo = mid;
-            else
-            {
-              hi = mid;
-              at = m;
-            }
-          }
-          found = true;
-          break;
-        }
-        s0 = s1;
-        seen = now;
-      }
-      if (!found)
-        continue;
+    // A ball of three touches found on a walk, put on its seam and traced unless known.
+    auto attempt = [&](const MedialBall3D& at, int g, int h) {
       MedialBall3D seamBall;
-      seamBall.generators = { at.generators[0], seen.front(), now.front() };
+      seamBall.generators = { at.generators[0], g, h };
       seamBall.q = { at.q[0] };
-      for (int g : { seen.front(), now.front() })
+      for (int other : { g, h })
       {
-        const Generator3D& gen = Generators[g];
+        const Generator3D& gen = Generators[other];
         const Vec3 foot = gen.nearestPoint(at.x);
         seamBall.q.push_back(gen.kind() == GeneratorKind3D::Face ? gen.parameterOf(foot) : gen.touchParameter(foot, at.x));
       }
@@ -1788,11 +1746,11 @@ bool Tracer::restartFrom(int face)
         contactCount(seamBall), (int)onTracedSeam(seamBall));
 #endif
       if (!inside || contactCount(seamBall) != 3 || onTracedSeam(seamBall))
-        continue; // a seam known (or none): the next walk
+        return false; // a seam known (or none)
       double separation = 1.0;
       const Eigen::VectorXd t = System.tangent(seamBall, &separation);
       if (separation > 1e-6)
-        continue;
+        return false;
       // A restart that fails leaves the trace as it was (the check after the restarts then
       // reports the face, or its sheets' coverage does).
       const MAT3D saved = Result;
@@ -1822,7 +1780,7 @@ bool Tracer::restartFrom(int face)
       catch (const InputError&)
       {
         restore();
-        continue;
+        return false;
       }
       const int restart = RestartNode;
       RestartNode = -1;
@@ -1838,7 +1796,7 @@ bool Tracer::restartFrom(int face)
       if (halves.size() != 2)
       {
         restore();
-        continue;
+        return false;
       }
       // One seam from the far end of the first half to the far end of the second.
       const MAT3DSeam& a = Result.seams[halves[0]];
@@ -1857,6 +1815,48 @@ bool Tracer::restartFrom(int face)
       Result.seams.erase(Result.seams.begin() + halves[1]);
       Spliced.insert(restart);
       return true;
+    };
+    for (const auto& leg : legs)
+    {
+      double s0 = 0.0;
+      std::vector<int> seen;
+      for (int k = 0; k <= samples; ++k)
+      {
+        const double s1 = static_cast<double>(k) / samples;
+        const MedialBall3D after = leg(s1);
+        const std::vector<int> now = othersTouching(after);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+        std::fprintf(stderr, "restart face %d walk %zu s %g: %s; others", face, w, s1, describe(after).c_str());
+        for (int o : now)
+          std::fprintf(stderr, " %d", o);
+        std::fprintf(stderr, "\n");
+#endif
+        // A sample touching two others is on a seam already (a wall's middle equidistant
+        // from a plate's faces); else bisect where the one other entity changes.
+        if (now.size() == 2 && attempt(after, now[0], now[1]))
+          return true;
+        if (k > 0 && seen.size() == 1 && now.size() == 1 && seen != now)
+        {
+          double lo = s0, hi = s1;
+          MedialBall3D at = after;
+          for (int b = 0; b < 50; ++b)
+          {
+            const double mid = 0.5 * (lo + hi);
+            const MedialBall3D m = leg(mid);
+            if (othersTouching(m) == seen)
+              lo = mid;
+            else
+            {
+              hi = mid;
+              at = m;
+            }
+          }
+          if (attempt(at, seen.front(), now.front()))
+            return true;
+        }
+        s0 = s1;
+        seen = now;
+      }
     }
   }
   return false;
