@@ -662,6 +662,40 @@ bool Tracer::outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::Ve
         inside = leaving < 0;
         if (inside)
           break;
+        // A touch inside its entity at the node that leaves it within the trial step (a
+        // cavity edge touched 6e-4 rad short of its wall's normal) runs on it first: the
+        // seam starts on the node's triplet and is crossed, at the exact crossing, as it is
+        // traced (swapped at the node, the wall's touch began off the wall and the sheet of
+        // the two walls lost its side there). Only a touch on its entity's border at the
+        // node starts on the entity beyond — and at a vertex, or within 1e-6 of the size of
+        // the node (a moved solid's junctions are placed only to about the square root of
+        // its rounding), the touch is taken to be on the border.
+        if (attempt == 0 && node.vertex < 0)
+        {
+          double lo = 0.0, hi = length;
+          MedialBall3D before = start;
+          for (int k = 0; k < 60 && hi - lo > 1e-12 * Size; ++k)
+          {
+            const double mid = 0.5 * (lo + hi);
+            MedialBall3D m;
+            bool out = !step(start, direction, mid, m) || m.r < 0.0;
+            for (int i = 0; i < 3 && !out; ++i)
+              out = Generators[m.generators[i]].exitSide(m.q[i], OnEntity) >= 0;
+            if (out)
+              hi = mid;
+            else
+            {
+              lo = mid;
+              before = m;
+            }
+          }
+          if (lo > 1e-6 * Size)
+          {
+            next = before;
+            inside = true;
+            break;
+          }
+        }
         MedialBall3D swapped = start;
         try
         {
