@@ -105,6 +105,7 @@ private:
   void startFrom(int node);
   MedialBall3D grownBall(int g, const Vec3& point, const Vec3& normal) const;
   std::vector<int> othersTouching(const MedialBall3D& ball) const;
+  static double distanceToSeam(const MAT3DSeam& seam, const Vec3& x);
   bool onTracedSeam(const MedialBall3D& ball) const;
   bool restartFrom(int face);
   bool outgoing(int index, const Triplet& t, MedialBall3D& ball, Eigen::VectorXd& tangent, int& touchpoints) const;
@@ -1253,19 +1254,9 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   // nodes: the same curve twice, kept once.
   const MedialBall3D& middle = seam.balls[seam.balls.size() / 2];
   for (const MAT3DSeam& other : Result.seams)
-  {
-    if (std::minmax(other.startNode, other.endNode) != std::minmax(seam.startNode, seam.endNode))
-      continue;
-    double nearest = Unbounded;
-    for (size_t i = 0; i + 1 < other.balls.size(); ++i)
-    {
-      const Vec3 a = other.balls[i].x, e = other.balls[i + 1].x - a;
-      const double s = e.squaredNorm() > 0.0 ? std::clamp((middle.x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
-      nearest = std::min(nearest, (a + s * e - middle.x).norm());
-    }
-    if (nearest <= 10.0 * Options.tolerance * Size)
+    if (std::minmax(other.startNode, other.endNode) == std::minmax(seam.startNode, seam.endNode) &&
+      distanceToSeam(other, middle.x) <= 10.0 * Options.tolerance * Size)
       return;
-  }
   Result.seams.push_back(std::move(seam));
   if (static_cast<int>(Result.seams.size()) > Options.maxSeams)
     fail("3D MAT: more than ", Options.maxSeams, " seams");
@@ -1705,17 +1696,26 @@ std::vector<int> Tracer::othersTouching(const MedialBall3D& ball) const
   return others;
 }
 
-// A ball on a seam already traced (within the seams' own chord tolerance).
+// The distance from x to a seam's polyline.
+double Tracer::distanceToSeam(const MAT3DSeam& seam, const Vec3& x)
+{
+  double nearest = Unbounded;
+  for (size_t i = 0; i + 1 < seam.balls.size(); ++i)
+  {
+    const Vec3 a = seam.balls[i].x, e = seam.balls[i + 1].x - a;
+    const double s = e.squaredNorm() > 0.0 ? std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+    nearest = std::min(nearest, (a + s * e - x).norm());
+  }
+  return nearest;
+}
+
+// A ball on a seam already traced (within the seams' own chord tolerance: the test a seam
+// traced twice is kept once by).
 bool Tracer::onTracedSeam(const MedialBall3D& ball) const
 {
   for (const MAT3DSeam& seam : Result.seams)
-    for (size_t i = 0; i + 1 < seam.balls.size(); ++i)
-    {
-      const Vec3 a = seam.balls[i].x, e = seam.balls[i + 1].x - a;
-      const double s = e.squaredNorm() > 0.0 ? std::clamp((ball.x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + s * e - ball.x).norm() <= 10.0 * Options.tolerance * Size)
-        return true;
-    }
+    if (distanceToSeam(seam, ball.x) <= 10.0 * Options.tolerance * Size)
+      return true;
   return false;
 }
 
