@@ -4,6 +4,7 @@
 #include "common/InputError.h"
 #include "geometry/BoundingVolumeHierarchy.h"
 #include "geometry/ClosestPoint.h"
+#include "mat3d/Rim.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -103,6 +104,7 @@ private:
   int addNode(const MedialBall3D& ball, int vertex, double merge = 0.0);
   int findNode(const Vec3& x, double merge = 0.0) const;
   void startFrom(int node);
+  void addRims();
   MedialBall3D grownBall(int g, const Vec3& point, const Vec3& normal) const;
   std::vector<int> othersTouching(const MedialBall3D& ball) const;
   static double distanceToSeam(const MAT3DSeam& seam, const Vec3& x);
@@ -1896,6 +1898,59 @@ bool Tracer::restartFrom(int face)
   return false;
 }
 
+// The rims of the curved faces (Rim.h). A closed rim is a skeletal edge from and to a
+// point of its own (a loop point, as a closed seam has); a rim that ends — on a seam, at a
+// fin point, or at a sharp edge — is refused: rims meeting seams are not traced yet.
+void Tracer::addRims()
+{
+  RimSearch search;
+  search.boundary = &B;
+  search.generators = &Generators;
+  search.size = Size;
+  search.tolerance = Options.tolerance;
+  search.maxStep = Options.maxStep;
+  search.maxSteps = Options.maxStepsPerSeam;
+  search.empty = [this](const Vec3& x, double r) {
+    const double radius = r * (1.0 - 1e-6) - Margin;
+    for (int f : Tree.candidatesWithin(x, radius))
+      if (Generators[f].polygon() ? Generators[f].distance(x) < radius
+                                  : patchComesWithin(B.faces()[f].patch, x, radius))
+        return false;
+    return true;
+  };
+  search.smoothNeighbour = [this](int face, int side) {
+    const auto it = SideEdge.find({ face, side });
+    if (it == SideEdge.end() || B.edges()[it->second].kind != VertexKind::Smooth)
+      return -1;
+    const Edge3D& e = B.edges()[it->second];
+    return e.faceA == face ? e.faceB : e.faceA;
+  };
+  for (const Rim& rim : traceRims(search))
+  {
+    const RimBall& start = rim.balls.front();
+    if (!rim.closed)
+      fail("3D MAT: the rim (skeletal edge) through ", format(B.userPoint(start.x)), " on ", Generators[start.face].name(),
+        " ends: ", rim.end, ". Rims that meet seams are not traced yet");
+    MAT3DSkeletalEdge edge;
+    edge.generators = { start.face, start.face };
+    for (const RimBall& r : rim.balls)
+    {
+      MedialBall3D ball;
+      ball.generators = { r.face };
+      ball.q = { r.q };
+      ball.x = r.x;
+      ball.r = r.r;
+      edge.balls.push_back(ball);
+    }
+    MAT3DNode node;
+    node.ball = edge.balls.front();
+    node.loopPoint = true;
+    Result.nodes.push_back(node);
+    edge.startNode = edge.endNode = static_cast<int>(Result.nodes.size()) - 1;
+    Result.skeletalEdges.push_back(std::move(edge));
+  }
+}
+
 MAT3D Tracer::run()
 {
   for (int v = 0; v < static_cast<int>(B.vertices().size()); ++v)
@@ -1917,8 +1972,10 @@ MAT3D Tracer::run()
     ball.r = 0.0;
     addNode(ball, v);
   }
+  addRims();
   if (Result.nodes.empty())
-    fail("3D MAT: the solid has no convex vertex: starting elsewhere is not supported yet");
+    fail("3D MAT: the solid has no convex vertex and no rim: starting elsewhere (circles of contact: a "
+         "cylinder's axis, a torus' core) is not supported yet");
   size_t started = 0;
   for (; started < Queue.size(); ++started)
     startFrom(Queue[started]);
@@ -1943,6 +2000,10 @@ MAT3D Tracer::run()
         for (int g : ball.generators)
           for (int f : Generators[g].faces())
             touched[root(f)] = true;
+    for (const MAT3DSkeletalEdge& rim : Result.skeletalEdges)
+      for (const MedialBall3D& ball : rim.balls)
+        for (int g : ball.generators)
+          touched[root(g)] = true;
   };
   markTouched();
   // A face no seam touches yet is tried once as a restart (each finds one seam; the
@@ -2049,7 +2110,10 @@ MAT3D Tracer::run()
       record(ball);
   for (MAT3DSkeletalEdge& rim : Result.skeletalEdges)
     for (MedialBall3D& ball : rim.balls)
-      ball.touches = { B.vertices()[rim.vertex].point };
+      if (rim.vertex >= 0)
+        ball.touches = { B.vertices()[rim.vertex].point };
+      else
+        record(ball);
   collectSheets();
   for (const Generator3D& g : Generators)
     Result.generators.push_back({ g.kind(), g.entity(), g.faces() });
@@ -2113,7 +2177,7 @@ MedialComplex MAT3D::complex() const
     MedialPoint3D p;
     p.x = n.ball.x;
     p.radius = n.ball.r;
-    p.type = n.loopPoint                ? MedialPoint3DType::Seam
+    p.type = n.loopPoint                ? (n.touchpoints == 1 ? MedialPoint3DType::SkeletalEdge : MedialPoint3DType::Seam)
       : n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd
                                    : MedialPoint3DType::Junction;
     p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
