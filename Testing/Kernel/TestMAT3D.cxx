@@ -11,6 +11,7 @@
 #include "shapes/Catalogue.h"
 #include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
+#include "shapes/Primitives.h"
 #include "shapes/RandomShapes.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <sstream>
 
 using namespace exactmat;
 
@@ -74,6 +76,7 @@ void expectPointsVerified(const Traced& t, const std::string& what, bool closedS
   EXPECT_EQ(v.contactMismatches, 0) << what << ": "
                                     << v.problems(VerifiedDistanceTolerance, c, [](const Vec3& x) { return x; });
   EXPECT_GT(v.contactsChecked, 0) << what;
+  EXPECT_EQ(v.osculationMismatches, 0) << what;
   std::vector<int> parent(t.mat.nodes.size());
   for (size_t i = 0; i < parent.size(); ++i)
     parent[i] = static_cast<int>(i);
@@ -380,6 +383,121 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
   };
   // A cylinder: its MAT has no seam (cones and the axis): not traced yet, and said so.
   EXPECT_NE(message(patchPieces(makeShape("cylinder").surfaces)).find("no seam touches"), std::string::npos);
+  // A sphere (every point an umbilic: its MAT is the centre) and a prolate spheroid (balls
+  // touching circles, centres on the axis): no rim, no vertex.
+  for (const Vec3& axes : { Vec3(1, 1, 1), Vec3(2, 1, 1) })
+    EXPECT_NE(message(patchPieces(ellipsoidSurfaces(axes, M_PI / 6, 2))).find("no convex vertex and no rim"),
+      std::string::npos)
+      << axes.transpose();
+  // An ellipsoid whose poles lie on its longest axis: the rim passes through them (collapsed
+  // sides of the patches), which it cannot cross yet.
+  EXPECT_NE(message(patchPieces(ellipsoidSurfaces(Vec3(1, 1.5, 2), 0.0, 2))).find("the rim through"), std::string::npos);
+}
+
+// The ellipsoid with semi-axes a > b > c (any order of the axes): no seam, one closed rim,
+// the ellipse in the plane of the shortest axis with semi-axes (a² − c²)/a and (b² − c²)/b,
+// r = c·√(1 − x²/(a² − c²) − y²/(b² − c²)) (issue 10's closed form); every rim ball touches
+// once and osculates. Patch layouts: poles on the shortest axis (elsewhere they lie on the
+// rim's touch curve: refused, UnsupportedSolidsAreRefusedByName) with the meridians cut off
+// the equator, below it, or on it (the rim's touch then runs along the patches' common
+// side); x, y or z shortest; flat ones; moved, turned, scaled and reweighted.
+TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
+{
+  struct Case
+  {
+    Vec3 semiAxes;
+    double cut;
+    int polar;
+    bool moved;
+  };
+  const std::vector<Case> cases{ { Vec3(2, 1.5, 1), M_PI / 6, 2, false }, { Vec3(2, 1.5, 1), 0.0, 2, false },
+    { Vec3(2, 1.5, 1), -0.35, 2, false }, { Vec3(1, 2, 1.5), M_PI / 6, 0, false }, { Vec3(1.5, 1, 2), 0.2, 1, false },
+    { Vec3(5, 4.5, 0.5), 0.0, 2, false }, { Vec3(1, 2, 1.5), 0.0, 0, true } };
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Vec3 offset(3e4, -6e4, 1.5e4);
+  const double scale = 1e-3;
+  for (const Case& c : cases)
+  {
+    std::vector<PatchPiece> pieces = patchPieces(ellipsoidSurfaces(c.semiAxes, c.cut, c.polar));
+    if (c.moved)
+      pieces = movedPieces(pieces, turn, scale, offset, 1e20);
+    std::ostringstream what;
+    what << "semi-axes " << c.semiAxes.transpose() << ", cut " << c.cut << ", poles on axis " << c.polar
+         << (c.moved ? ", moved" : "");
+    const Traced t = trace(pieces);
+    ASSERT_EQ(t.mat.seams.size(), 0u) << what.str();
+    ASSERT_EQ(t.mat.skeletalEdges.size(), 1u) << what.str();
+    EXPECT_EQ(t.mat.junctionCount(), 0) << what.str();
+    const MAT3DSkeletalEdge& rim = t.mat.skeletalEdges.front();
+    EXPECT_EQ(rim.startNode, rim.endNode) << what.str();
+    int shortest = 0;
+    const double cc = c.semiAxes.minCoeff(&shortest);
+    const Normalisation& frame = t.boundary->userFrame();
+    double worst = 0.0, longest = 0.0;
+    for (size_t i = 0; i < rim.balls.size(); ++i)
+    {
+      Vec3 x = frame.toUser(rim.balls[i].x);
+      double r = frame.lengthToUser(rim.balls[i].r);
+      if (c.moved)
+      {
+        x = turn.transpose() * (x - offset) / scale;
+        r /= scale;
+      }
+      double inside = 1.0, onRim = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (k != shortest)
+        {
+          const double squares = c.semiAxes(k) * c.semiAxes(k) - cc * cc;
+          inside -= x(k) * x(k) / squares;
+          onRim += std::pow(x(k) * c.semiAxes(k) / squares, 2);
+        }
+      worst = std::max({ worst, std::abs(x(shortest)), std::abs(std::sqrt(onRim) - 1.0) * c.semiAxes.maxCoeff(),
+        std::abs(r - cc * std::sqrt(std::max(0.0, inside))) });
+      if (i > 0)
+        longest = std::max(longest, (rim.balls[i].x - rim.balls[i - 1].x).norm() / t.boundary->diagonal());
+    }
+    // (Moved 1.5e7 × its size away, the input itself is rounded at 1.5e-9 of the size.)
+    EXPECT_LE(worst / c.semiAxes.maxCoeff(), 1e-9 + 64.0 * frame.inputRounding()) << what.str();
+    EXPECT_LE(longest, MAT3DOptions().maxStep * (1 + 1e-9)) << what.str();
+    // (Verified once here: a ball osculating a face takes the footpoint search milliseconds.)
+    EXPECT_TRUE(topologyProblems(t).empty()) << what.str();
+    const PatchBoundary boundary(*t.boundary);
+    const MedialVerification v =
+      verifyMedialComplex(boundary, t.mat.complex(), 1, std::max(1e-15, 64.0 * frame.inputRounding()));
+    EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what.str();
+    EXPECT_EQ(v.contactMismatches, 0) << what.str();
+    EXPECT_EQ(v.contactsChecked, static_cast<int>(rim.balls.size()) - 1) << what.str();
+    EXPECT_EQ(v.osculationsChecked, static_cast<int>(rim.balls.size()) - 1) << what.str();
+    EXPECT_EQ(v.osculationMismatches, 0) << what.str();
+    if (!c.moved)
+      EXPECT_LE(v.maxOsculationError, MedialVerification::OsculationTolerance) << what.str();
+  }
+}
+
+// The osculation check is what tells a rim from a ball that merely touches once: each rim
+// ball shrunk about its touch (still inside the solid, distance = radius, one touchpoint)
+// fails it, and only it.
+TEST(MAT3D, ARimBallThatDoesNotOsculateFailsTheVerification)
+{
+  const Traced t = trace(patchPieces(makeShape("ellipsoid").surfaces));
+  MedialComplex c = t.mat.complex();
+  const PatchBoundary boundary(*t.boundary);
+  EXPECT_TRUE(verifyMedialComplex(boundary, c).ok(VerifiedDistanceTolerance));
+  for (MedialPoint3D& p : c.points)
+    if (p.type == MedialPoint3DType::SkeletalEdge)
+    {
+      const Vec3 touch = p.touches.front();
+      p.x = touch + 0.99 * (p.x - touch);
+      p.radius *= 0.99;
+    }
+  const MedialVerification v = verifyMedialComplex(boundary, c);
+  EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance);
+  EXPECT_EQ(v.contactMismatches, 0);
+  EXPECT_NEAR(v.maxOsculationError, 0.01, 1e-6);
+  EXPECT_GT(v.osculationMismatches, 0);
+  EXPECT_FALSE(v.ok(VerifiedDistanceTolerance));
+  EXPECT_NE(v.problems(VerifiedDistanceTolerance, c, [](const Vec3& x) { return x; }).find("does not osculate"),
+    std::string::npos);
 }
 
 namespace

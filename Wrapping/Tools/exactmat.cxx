@@ -825,7 +825,7 @@ int run3D(const Arguments& a)
     b.countVertices(exactmat::VertexKind::Reflex), b.userFrame().lengthToUser(b.diagonal()));
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
-  std::printf("  skeletal edges      %d (rims at corners of reflex edges)\n", mat->GetNumberOfSkeletalEdges());
+  std::printf("  skeletal edges      %d (rims: where sheets end inside the solid)\n", mat->GetNumberOfSkeletalEdges());
   if (!a.sheets)
     std::printf("  sheets              %d (generator pairs and their bounding seams; not filled: --no-sheets)\n",
       mat->GetNumberOfSheets());

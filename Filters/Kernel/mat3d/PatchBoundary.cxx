@@ -118,6 +118,40 @@ PatchBoundary::PatchBoundary(const Boundary3D& boundary)
   // A quadrilateral face is planar to the input's rounding (a part far from the origin has
   // its corners rounded off their plane by that much, and is still a polyhedron).
   Flat = std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal();
+  SharpSide.assign(boundary.faces().size(), { false, false, false, false });
+  for (const Edge3D& e : boundary.edges())
+    if (e.kind != VertexKind::Smooth)
+    {
+      SharpSide[e.faceA][e.sideA] = true;
+      SharpSide[e.faceB][e.sideB] = true;
+    }
+}
+
+double PatchBoundary::osculation(const Contact& contact, const Vec3& centre, double radius) const
+{
+  if (contact.source < 0)
+    return NAN;
+  const Face3D& face = Boundary->faces()[contact.source];
+  Vec3 corners[4];
+  if (flatPolygon(face, Flat, corners) > 0)
+    return NAN;
+  // (The contact's parameters when the search gave them: the closest point search is slow
+  // at a contact of fourth order.)
+  const Vec2 q = std::isnan(contact.parameters.x()) ? [&] {
+    const PatchFootpoint f = closestPoint(face.patch, centre);
+    return Vec2(f.u, f.v);
+  }()
+                                                     : contact.parameters;
+  // Sides in BezierPatch's order: v = 0, u = 1, v = 1, u = 0.
+  const double gap[4] = { q.y(), 1.0 - q.x(), 1.0 - q.y(), q.x() };
+  for (int side = 0; side < 4; ++side)
+    if (gap[side] <= 1e-9 && SharpSide[contact.source][side])
+      return NAN;
+  // Su×Sv points out of the material: a convex face bends away from it, k2 < 0 there.
+  const SurfaceDerivatives d = face.patch.derivatives(q.x(), q.y());
+  const SurfaceDerivatives::Curvatures c = d.principalCurvatures();
+  const double k1 = -std::min(c.k1, c.k2);
+  return std::abs(radius * k1 - 1.0);
 }
 
 double PatchBoundary::distance(const Vec3& x) const
@@ -159,7 +193,7 @@ std::vector<SolidBoundary::Contact> PatchBoundary::touchpoints(const Vec3& x, do
       continue;
     }
     for (const PatchFootpoint& f : patchFootpoints(Boundary->faces()[i].patch, x, radius))
-      minima.push_back({ f.point, f.distance, f.onBoundary, i });
+      minima.push_back({ f.point, f.distance, f.onBoundary, i, Vec2(f.u, f.v) });
   }
   return distinctContacts(std::move(minima), x);
 }

@@ -7,6 +7,9 @@
 #include "geometry/BoundingVolumeHierarchy.h"
 #include "medial/SolidBoundary.h"
 
+#include <array>
+#include <vector>
+
 namespace exactmat
 {
 
@@ -22,6 +25,7 @@ public:
   double size() const override { return Size; }
   double aspect() const override { return Aspect; }
   double inputRounding() const override { return Boundary->userFrame().inputRounding(); }
+  double osculation(const Contact& contact, const Vec3& centre, double radius) const override;
 
 protected:
   Vec3 nearestPoint(const Vec3& x) const override;
@@ -31,6 +35,7 @@ private:
   BoundingVolumeHierarchy Tree;
   double Size = 1.0, Aspect = 1.0;
   double Flat = 0.0; ///< how far off its plane a quadrilateral face may be and still count as flat
+  std::vector<std::array<bool, 4>> SharpSide; ///< per face and patch side: a convex or reflex edge there
 };
 
 } // namespace exactmat

@@ -58,7 +58,7 @@ std::vector<SolidBoundary::Contact> SolidBoundary::distinctContacts(
     for (const Contact& q : out)
       keep = keep && !sameContact(x, valley, q.point, m.point, merge);
     if (keep)
-      out.push_back({ m.point, m.distance, m.source });
+      out.push_back({ m.point, m.distance, m.source, m.parameters });
   }
   return out;
 }

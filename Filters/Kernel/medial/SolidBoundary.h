@@ -7,6 +7,7 @@
 
 #include "common/Types.h"
 
+#include <cmath>
 #include <vector>
 
 namespace exactmat
@@ -23,6 +24,7 @@ public:
     Vec3 point = Vec3::Zero();
     double distance = 0.0;
     int source = -1; ///< the face (numbering of the implementation)
+    Vec2 parameters = Vec2::Constant(NAN); ///< on that face, where the implementation knows them
   };
 
   /// Global distance from x to the boundary.
@@ -31,6 +33,16 @@ public:
   /// The distinct touchpoints of the ball of radius `radius` about x: local minima of the
   /// distance within `radius`, nearest first.
   virtual std::vector<Contact> touchpoints(const Vec3& x, double radius) const = 0;
+
+  /// How far a ball of `radius` touching at `contact` is from osculating the boundary there
+  /// in its most curved direction: |radius·κ1 − 1|, κ1 the largest principal curvature of
+  /// the face at the contact (positive where convex). NaN where that is not defined: a flat
+  /// face, or a contact on a sharp edge or vertex (a rim at a vertex, where the sheet of two
+  /// reflex edges closes). The check of a skeletal edge's points (thesis §3.4).
+  virtual double osculation(const Contact& /*contact*/, const Vec3& /*centre*/, double /*radius*/) const
+  {
+    return NAN;
+  }
 
   /// Bounding-box diagonal of the solid.
   virtual double size() const = 0;
@@ -49,6 +61,7 @@ protected:
     double distance;
     bool oneSided;
     int source;
+    Vec2 parameters = Vec2::Constant(NAN);
   };
 
   /// The boundary point nearest x (for the valley test between two close minima).

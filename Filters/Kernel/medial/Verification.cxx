@@ -33,6 +33,7 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
   }
   std::vector<double> error(chosen.size(), 0.0);
   std::vector<int> count(chosen.size(), -1);
+  std::vector<double> osculation(chosen.size(), NAN);
   parallel(chosen.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
@@ -46,6 +47,8 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
         count[k] = static_cast<int>(contacts.size());
         for (const SolidBoundary::Contact& c : contacts)
           distance = std::min(distance, c.distance);
+        if (p.type == MedialPoint3DType::SkeletalEdge && contacts.size() == 1)
+          osculation[k] = boundary.osculation(contacts.front(), p.x, p.radius);
       }
       if (!(distance < INFINITY))
         distance = boundary.distance(p.x);
@@ -60,6 +63,18 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
     {
       v.maxDistanceError = std::isnan(error[k]) ? INFINITY : error[k];
       v.worstPoint = i;
+    }
+    if (!std::isnan(osculation[k]))
+    {
+      ++v.osculationsChecked;
+      const double bound =
+        MedialVerification::OsculationTolerance + std::sqrt(inputRounding * size / mat.points[i].radius);
+      v.osculationMismatches += !(osculation[k] <= bound);
+      if (!(osculation[k] <= v.maxOsculationError))
+      {
+        v.maxOsculationError = osculation[k];
+        v.worstOsculation = i;
+      }
     }
     if (mat.points[i].contacts <= 0)
       continue;
@@ -81,6 +96,11 @@ std::string MedialVerification::problems(double distanceTolerance, const MedialC
   {
     out += "largest |distance to boundary - radius| / size " + format(maxDistanceError) +
       " > tolerance " + format(distanceTolerance) + " at " + format(toUser(mat.points[worstPoint].x));
+  }
+  if (osculationMismatches > 0 && worstOsculation >= 0)
+  {
+    out += std::string(out.empty() ? "" : "; ") + "a skeletal edge's ball does not osculate the face it touches: |radius x " +
+      "largest curvature - 1| = " + format(maxOsculationError) + " at " + format(toUser(mat.points[worstOsculation].x));
   }
   if (!contactsCounted())
   {

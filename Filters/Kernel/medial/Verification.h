@@ -24,6 +24,17 @@ struct MedialVerification
   int contactMismatches = 0;     ///< of those, how many have another count
   int firstMismatch = -1;        ///< the first such point
   int firstMismatchCount = 0;    ///< and how many touchpoints it has
+  /// Skeletal edge points whose one touch lies inside a curved face: the ball must osculate
+  /// the face there, radius = 1/κ1 (κ1 its largest principal curvature).
+  int osculationsChecked = 0;
+  double maxOsculationError = 0.0; ///< largest |radius·κ1 − 1| of those
+  int worstOsculation = -1;        ///< where that maximum is
+  int osculationMismatches = 0;    ///< of those, how many exceed their bound
+  /// The bound on |radius·κ1 − 1| is OsculationTolerance + √(δ/r), δ what the boundary is
+  /// known to (inputRounding × size): the closest point of an osculating ball is fixed
+  /// across the ridge only to s ≈ (δ·r³)^¼ (a contact of fourth order), and κ1, stationary
+  /// there, moves by about (s/r)² ≈ √(δ/r) relative. Unmoved solids: about 1e-8.
+  static constexpr double OsculationTolerance = 1e-6;
   /// The solid's longest extent over its shortest; past MaxVerifiedAspect nothing is
   /// checked (the patch closest-point search cannot resolve sides that elongated in
   /// bounded time: minutes per solid) and the verification fails, saying so.
@@ -33,7 +44,8 @@ struct MedialVerification
 
   bool ok(double distanceTolerance) const
   {
-    return maxDistanceError <= distanceTolerance && contactMismatches == 0 && contactsCounted();
+    return maxDistanceError <= distanceTolerance && contactMismatches == 0 && contactsCounted() &&
+      osculationMismatches == 0;
   }
   /// What is wrong and where, in one line ("" when ok); `toUser` maps the complex's
   /// points to the frame the user sees.
@@ -48,6 +60,8 @@ struct MedialVerification
 /// than the solid (a 1e-12 thin sheet, a 1e12 long bar) are counted at their own scale,
 /// plus what the input is known to (a part far from the origin: its coordinates' rounding,
 /// Normalisation::inputRounding, against which a tiny ball's touchpoints cannot be told).
+/// A skeletal edge point touching a curved face inside (or across a smooth edge) is also
+/// checked to osculate it: radius·κ1 = 1 (SolidBoundary::osculation).
 /// `parallel` runs the per-point queries; the figures are the same whichever runner is given.
 MedialVerification verifyMedialComplex(
   const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1,

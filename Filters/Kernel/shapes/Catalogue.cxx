@@ -250,56 +250,6 @@ std::vector<NurbsSurface> cylinderFaces(double r, double l)
   return faces;
 }
 
-// The ellipsoid x²/a² + y²/b² + z²/c² = 1 as eight rational biquadratic patches of the
-// unit sphere's revolution form, scaled: four quarter arcs about the polar axis (45°→135°,
-// …, as the cylinder's) times two meridian arcs, −90°→30° and 30°→90°. The polar axis is
-// the shortest one (turned there by a cyclic exchange of the axes, a rotation): the rim's
-// touchpoints run along the equator about it, which the meridian cut leaves inside the
-// lower patches, and pass no pole (a collapsed side). 
-std::vector<NurbsSurface> ellipsoidFaces(double a, double b, double c)
-{
-  // A rational quadratic arc of the unit circle from angle α to β: points and weights.
-  auto arc = [](double alpha, double beta, std::array<Vec3, 3>& p, std::array<double, 3>& w) {
-    const double half = 0.5 * (beta - alpha), middle = 0.5 * (alpha + beta);
-    p = { Vec3(std::cos(alpha), std::sin(alpha), 0.0), Vec3(std::cos(middle), std::sin(middle), 0.0) / std::cos(half),
-      Vec3(std::cos(beta), std::sin(beta), 0.0) };
-    w = { 1.0, std::cos(half), 1.0 };
-    for (Vec3& point : p) // the poles' ρ exactly 0 (cos(−π/2) is 6e-17): collapsed sides
-      for (int i = 0; i < 2; ++i)
-        point(i) = std::abs(point(i)) < 1e-15 ? 0.0 : point(i);
-  };
-  const double meridianCuts[3] = { -M_PI / 2, M_PI / 6, M_PI / 2 };
-  std::vector<NurbsSurface> faces;
-  for (int band = 0; band < 2; ++band)
-  {
-    std::array<Vec3, 3> m; // (ρ, z) of the meridian arc in x, y
-    std::array<double, 3> mw;
-    arc(meridianCuts[band], meridianCuts[band + 1], m, mw);
-    for (int k = 0; k < 4; ++k)
-    {
-      std::array<Vec3, 3> e; // the azimuth arc
-      std::array<double, 3> ew;
-      arc(M_PI / 4 + k * M_PI / 2, 3 * M_PI / 4 + k * M_PI / 2, e, ew);
-      Vec3List net(9);
-      std::vector<double> w(9);
-      // u along the azimuth, v along the meridian (south to north): Su × Sv points out.
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-        {
-          const double rho = m[j].x(), z = m[j].y();
-          const Vec3 unit(rho * e[i].x(), rho * e[i].y(), z); // polar axis z
-          const Vec3 turned = c <= a && c <= b ? unit
-            : a <= b                           ? Vec3(unit.z(), unit.x(), unit.y())
-                                               : Vec3(unit.y(), unit.z(), unit.x());
-          net[i * 3 + j] = turned.cwiseProduct(Vec3(a, b, c));
-          w[i * 3 + j] = ew[i] * mw[j];
-        }
-      faces.push_back(bezierSurface(2, 2, net, w));
-    }
-  }
-  return faces;
-}
-
 // A cube [−a, a]³ whose six faces are bicubic patches bulging outwards by `bulge`.
 std::vector<NurbsSurface> pillowFaces(double a, double bulge)
 {
@@ -573,7 +523,12 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
     requirePositive(h, "height", name);
     requirePositive(s.length, "length", name);
     shape.dimension = 3;
-    shape.surfaces = ellipsoidFaces(w / 2, h / 2, s.length / 2);
+    // Poles on the shortest axis, the meridians cut at 30°: the rim's touchpoints run along
+    // the equator about that axis, inside the patches, through no pole.
+    const Vec3 semiAxes(w / 2, h / 2, s.length / 2);
+    int polar = 0;
+    semiAxes.minCoeff(&polar);
+    shape.surfaces = ellipsoidSurfaces(semiAxes, M_PI / 6, polar);
   }
   else if (name == "pillow")
   {

@@ -1,5 +1,6 @@
 #include "Primitives.h"
 
+#include <array>
 #include <cmath>
 
 namespace exactmat
@@ -119,6 +120,50 @@ NurbsCurve makeWavyStrip(int spans)
   for (size_t i = 0; i < k.size(); ++i)
     k[i] = static_cast<double>(i);
   return NurbsCurve(p, k, pts);
+}
+
+std::vector<NurbsSurface> ellipsoidSurfaces(const Vec3& semiAxes, double cutLatitude, int polarAxis)
+{
+  // A rational quadratic arc of the unit circle from angle α to β: points and weights.
+  auto arc = [](double alpha, double beta, std::array<Vec3, 3>& p, std::array<double, 3>& w) {
+    const double half = 0.5 * (beta - alpha), middle = 0.5 * (alpha + beta);
+    p = { Vec3(std::cos(alpha), std::sin(alpha), 0.0), Vec3(std::cos(middle), std::sin(middle), 0.0) / std::cos(half),
+      Vec3(std::cos(beta), std::sin(beta), 0.0) };
+    w = { 1.0, std::cos(half), 1.0 };
+    for (Vec3& point : p) // the poles' ρ exactly 0 (cos(−π/2) is 6e-17): collapsed sides
+      for (int i = 0; i < 2; ++i)
+        point(i) = std::abs(point(i)) < 1e-15 ? 0.0 : point(i);
+  };
+  const double cuts[3] = { -M_PI / 2, cutLatitude, M_PI / 2 };
+  std::vector<NurbsSurface> faces;
+  for (int band = 0; band < 2; ++band)
+  {
+    std::array<Vec3, 3> m; // (ρ, z) of the meridian arc in x, y
+    std::array<double, 3> mw;
+    arc(cuts[band], cuts[band + 1], m, mw);
+    for (int k = 0; k < 4; ++k)
+    {
+      std::array<Vec3, 3> e; // the azimuth arc
+      std::array<double, 3> ew;
+      arc(M_PI / 4 + k * M_PI / 2, 3 * M_PI / 4 + k * M_PI / 2, e, ew);
+      Vec3List net(9);
+      std::vector<double> w(9);
+      // u along the azimuth, v along the meridian (south to north): Su × Sv points out. The
+      // polar axis is turned onto x or y by a cyclic exchange of the axes (a rotation).
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+        {
+          const Vec3 unit(m[j].x() * e[i].x(), m[j].x() * e[i].y(), m[j].y());
+          const Vec3 turned = polarAxis == 2 ? unit
+            : polarAxis == 0                 ? Vec3(unit.z(), unit.x(), unit.y())
+                                             : Vec3(unit.y(), unit.z(), unit.x());
+          net[i * 3 + j] = turned.cwiseProduct(semiAxes);
+          w[i * 3 + j] = ew[i] * mw[j];
+        }
+      faces.emplace_back(2, 2, KnotVector{ 0, 0, 0, 1, 1, 1 }, KnotVector{ 0, 0, 0, 1, 1, 1 }, 3, 3, net, w);
+    }
+  }
+  return faces;
 }
 
 } // namespace exactmat

@@ -30,6 +30,13 @@ NurbsSurface makeExtrusion(const NurbsCurve& profile, const Vec3& direction, dou
 /// follows the profile, v the full circle (rational quadratic, 4 spans).
 NurbsSurface makeRevolution(const NurbsCurve& profile);
 
+/// The ellipsoid with these semi-axes about the origin as eight rational biquadratic
+/// patches of the sphere's form of revolution, scaled: four quarter arcs about the polar
+/// axis (0 = x, 1 = y, 2 = z; 45°→135°, …) times two meridian arcs, −90° → `cutLatitude`
+/// and `cutLatitude` → 90° (radians, in (−90°, 90°)). The poles are collapsed sides; the
+/// normals point outwards.
+std::vector<NurbsSurface> ellipsoidSurfaces(const Vec3& semiAxes, double cutLatitude, int polarAxis);
+
 /// Scaling families (benchmarks and tests): boundaries with local features whose entity
 /// count grows with n.
 /// A strip whose top and bottom are saw-tooth polylines with about n corners in all.
