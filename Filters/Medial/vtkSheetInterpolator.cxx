@@ -12,6 +12,7 @@
 #include "common/InputError.h"
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
+#include "sheets/RimSheet.h"
 #include "sheets/SheetFit.h"
 #include "sheets/SheetInterpolation.h"
 #include "sheets/TransitionSheets.h"
@@ -604,6 +605,30 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   // Sheets no seam borders, found beyond the borders of those built (as interpolateSheets
   // does): each new one is a tuple of its own, appended to the sheet arrays.
   addTransitionSheets(boundary, generators, groups, borders, filled, errors, options);
+  // A MAT with no seam: each closed rim bounds a sheet of its own (the ellipsoid's), a group
+  // of every face it touches on both sides.
+  for (const SheetBorderCurve& rim : seamlessRims(complex))
+  {
+    SheetGroup group;
+    errors.emplace_back();
+    try
+    {
+      filled.push_back(interpolateRimSheet(boundary, generators, rim, options));
+      group.a = group.b = filled.back().members[0];
+    }
+    catch (const InputError& e)
+    {
+      errors.back() = e.what();
+      filled.emplace_back();
+    }
+    if (group.a.empty())
+      for (int f = 0; f < static_cast<int>(boundary.faces().size()); ++f)
+        group.a.push_back(f);
+    group.b = group.a;
+    filled.back().members = { { group.a, group.b } };
+    groups.push_back(std::move(group));
+    borders.push_back({ rim });
+  }
   for (size_t k = labels.size(); k < groups.size(); ++k)
     labels.push_back(sideLabel(groups[k]));
   // Each group's tuples in the sheet arrays: its traced pairs', or a new tuple for a sheet

@@ -1,4 +1,5 @@
 #include "sheets/SheetInterpolation.h"
+#include "sheets/RimSheet.h"
 
 #include "sheets/TransitionSheets.h"
 
@@ -2038,6 +2039,20 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   }
   // Sheets no seam borders, found beyond the borders of those built.
   addTransitionSheets(boundary, generators, groups, borders, out, errors, checked);
+  // A MAT with no seam: each closed rim bounds a sheet of its own (the ellipsoid's).
+  for (const SheetBorderCurve& rim : seamlessRims(mat))
+  {
+    errors.emplace_back();
+    try
+    {
+      out.push_back(interpolateRimSheet(boundary, generators, rim, checked));
+    }
+    catch (const InputError& e)
+    {
+      errors.back() = e.what();
+      out.emplace_back();
+    }
+  }
   for (size_t k = 0; k < errors.size(); ++k)
     if (!errors[k].empty())
       failures.emplace_back(static_cast<int>(k), errors[k]);

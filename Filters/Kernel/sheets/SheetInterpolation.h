@@ -35,6 +35,8 @@ struct SheetBorderCurve
   Vec3List centres;
   std::vector<double> radii;
   std::vector<int> ids; ///< the caller's numbering of the points (kept on the sheet's vertices)
+  /// Where each ball touches (a rim's one osculating point); empty when not given.
+  Vec3List touches;
 };
 
 struct SheetOptions
