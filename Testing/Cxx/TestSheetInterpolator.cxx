@@ -461,6 +461,39 @@ TEST(vtkSheetInterpolator, SteppedBlockIsCompleteAndExact)
   EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-9);
 }
 
+TEST(vtkSheetInterpolator, EllipsoidIsOneSheetInsideItsRim)
+{
+  // No seam: vtkMAT3DFilter gives the rim, the interpolator the sheet it bounds — the
+  // region of y = 0 (the shortest axis: semi-axes 2, 1, 1.5) inside the ellipse with
+  // semi-axes 3/2 and 5/6, r = √(1 − x²/3 − z²/1.25) — sharing the rim's points, every
+  // point verified, its B-spline fit within the tolerance.
+  vtkNew<vtkNURBSSource> ellipsoid;
+  ellipsoid->SetShapeName("ellipsoid");
+  Pipeline p(ellipsoid);
+  ASSERT_TRUE(p.errors->Messages.empty()) << p.errors->Messages;
+  EXPECT_EQ(p.mat->GetNumberOfSeams(), 0);
+  EXPECT_EQ(p.mat->GetNumberOfSkeletalEdges(), 1);
+  EXPECT_EQ(p.sheets->GetNumberOfSheets(), 1);
+  EXPECT_EQ(p.sheets->GetNumberOfFailedSheets(), 0);
+  EXPECT_TRUE(p.sheets->GetVerificationPassed()) << p.warnings->Messages;
+  EXPECT_EQ(p.sheets->GetNumberOfVerifiedPoints(), p.sheets->GetOutput()->GetNumberOfPoints());
+  EXPECT_LE(p.sheets->GetMaximumCoverageShortfall(), 1e-3);
+  EXPECT_EQ(p.sheets->GetNumberOfSheetsAboveFitTolerance(), 0);
+  vtkPolyData* out = p.sheets->GetOutput();
+  vtkDataArray* radius = out->GetPointData()->GetArray(arrays::Radius);
+  ASSERT_TRUE(radius);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    out->GetPoint(i, x);
+    const double exact = std::sqrt(std::max(0.0, 1.0 - x[0] * x[0] / 3.0 - x[2] * x[2] / 1.25));
+    worst = std::max({ worst, std::abs(x[1]), std::abs(radius->GetTuple1(i) - exact) });
+  }
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_NEAR(sheetArea(out) / (M_PI * 1.5 * (5.0 / 6.0)), 1.0, 2e-3); // (the rim polygon inside the ellipse)
+}
+
 TEST(vtkSheetInterpolator, BoxWithACavityIsCompleteAndExact)
 {
   // A second shell inside the first: its faces point into the cavity, its edges are reflex.

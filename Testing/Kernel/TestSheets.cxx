@@ -14,6 +14,7 @@
 #include "shapes/Catalogue.h"
 #include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
+#include "shapes/Primitives.h"
 #include "shapes/RandomShapes.h"
 #include "sheets/SheetInterpolation.h"
 
@@ -24,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <sstream>
 #include <tuple>
 
 using namespace exactmat;
@@ -119,9 +121,13 @@ double ballCoverage(const Sheets& s, int grid)
   const Boundary3D& b = *s.boundary;
   const PatchBoundary exact(b);
   const double size = b.diagonal();
+  // (The box of points on the faces: a rational patch's control net reaches far past it —
+  // an ellipsoid's arcs of 120° have their middle control point at twice the radius.)
   Box3 box;
   for (const Face3D& f : b.faces())
-    box.extend(f.patch.boundingBox());
+    for (int i = 0; i <= 8; ++i)
+      for (int j = 0; j <= 8; ++j)
+        box.extend(f.patch.evaluate(i / 8.0, j / 8.0));
   struct Piece
   {
     std::array<Vec3, 3> x;
@@ -188,6 +194,72 @@ TEST(Sheets, TheBallsFillTheSolid)
   {
     const Sheets s = sheetsOf(pieces);
     EXPECT_GE(ballCoverage(s, 16), 0.999) << name;
+  }
+}
+
+// The ellipsoid with semi-axes a > b > c (any order of the axes): one sheet, bounded by the
+// rim alone — the region of the plane of the shortest axis inside the ellipse with
+// semi-axes (a² − c²)/a, (b² − c²)/b, with r = c·√(1 − x²/(a² − c²) − y²/(b² − c²)) —
+// whatever the patch layout (poles on the shortest axis, meridians cut off or on the
+// equator), flat, and moved 1.5e7 × its size; its balls fill the solid.
+TEST(Sheets, EllipsoidSheetIsTheClosedForm)
+{
+  struct Case
+  {
+    Vec3 semiAxes;
+    double cut;
+    bool moved;
+  };
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Vec3 offset(3e4, -6e4, 1.5e4);
+  const double scale = 1e-3;
+  for (const Case& c : { Case{ Vec3(2, 1.5, 1), M_PI / 6, false }, Case{ Vec3(1, 2, 1.5), 0.0, false },
+         Case{ Vec3(5, 4.5, 0.5), 0.0, false }, Case{ Vec3(2, 1.5, 1), -0.3, true } })
+  {
+    int shortest = 0;
+    const double cc = c.semiAxes.minCoeff(&shortest);
+    std::vector<PatchPiece> pieces = patchPieces(ellipsoidSurfaces(c.semiAxes, c.cut, shortest));
+    if (c.moved)
+      pieces = movedPieces(pieces, turn, scale, offset, 1e20);
+    std::ostringstream what;
+    what << "semi-axes " << c.semiAxes.transpose() << ", cut " << c.cut << (c.moved ? ", moved" : "");
+    const Sheets s = sheetsOf(pieces);
+    ASSERT_EQ(s.meshes.size(), 1u) << what.str();
+    const MedialSheetMesh& mesh = s.meshes.front();
+    const Normalisation& frame = s.boundary->userFrame();
+    const double rounding = 64.0 * frame.inputRounding();
+    double worst = 0.0, area = 0.0;
+    for (const SheetVertex& v : mesh.vertices)
+    {
+      Vec3 x = frame.toUser(v.x);
+      double r = frame.lengthToUser(v.r);
+      if (c.moved)
+      {
+        x = turn.transpose() * (x - offset) / scale;
+        r /= scale;
+      }
+      double inside = 1.0, rim = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (k != shortest)
+        {
+          const double squares = c.semiAxes(k) * c.semiAxes(k) - cc * cc;
+          inside -= x(k) * x(k) / squares;
+          rim += std::pow(x(k) * c.semiAxes(k) / squares, 2);
+        }
+      EXPECT_LE(rim, 1.0 + 1e-9 + rounding) << what.str() << " at " << x.transpose();
+      worst = std::max({ worst, std::abs(x(shortest)), std::abs(r - cc * std::sqrt(std::max(0.0, inside))) });
+    }
+    EXPECT_LE(worst / c.semiAxes.maxCoeff(), 1e-9 + rounding) << what.str();
+    for (const auto& t : mesh.triangles)
+      area += 0.5 * (mesh.vertices[t[1]].x - mesh.vertices[t[0]].x).cross(mesh.vertices[t[2]].x - mesh.vertices[t[0]].x).norm();
+    double exact = M_PI / std::pow(frame.lengthToUser(1.0) / (c.moved ? scale : 1.0), 2);
+    for (int k = 0; k < 3; ++k)
+      if (k != shortest)
+        exact *= (c.semiAxes(k) * c.semiAxes(k) - cc * cc) / c.semiAxes(k);
+    EXPECT_NEAR(area / exact, 1.0, 1e-3) << what.str();
+    expectExactSheets(s, what.str(), 1e-3, 17);
+    if (!c.moved && c.semiAxes.maxCoeff() < 4.0 * cc) // (a flat one leaves too few grid points inside)
+      EXPECT_GE(ballCoverage(s, 12), 0.999) << what.str();
   }
 }
 
