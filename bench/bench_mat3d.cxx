@@ -398,6 +398,14 @@ void cavityRow(int count, unsigned seed)
   if (!firstRefusal.empty())
     std::fprintf(stderr, "seed %u, first refusal: %s\n", seed, firstRefusal.substr(0, 240).c_str());
 }
+ShapeParameters ellipsoidAxes(double width, double height, double length)
+{
+  ShapeParameters p;
+  p.width = width;
+  p.height = height;
+  p.length = length;
+  return p;
+}
 } // namespace
 
 
@@ -417,6 +425,8 @@ int main(int argc, char** argv)
     repeats);
   row("pillow (bicubic faces)", patchPieces(makeShape("pillow").surfaces), repeats);
   row("box with a free-form top", boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5), repeats);
+  row("ellipsoid 4 x 3 x 2 (a rim, no seam)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), repeats);
+  row("ellipsoid 10 x 9 x 1 (a rim, no seam)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(10, 9, 1)).surfaces), repeats);
   std::mt19937 rng(3);
   for (int n : { 6, 12 })
     row("random frustum, " + std::to_string(n) + "-gon", randomFrustum(rng, n), repeats);
@@ -528,6 +538,8 @@ int main(int argc, char** argv)
   sheetRow("notched cube (reflex corner)", patchPieces(makeShape("notched-cube").surfaces), repeats);
   sheetRow("stepped block (rims)", patchPieces(makeShape("stepped-block").surfaces), repeats);
   sheetRow("box with a cubic cavity (catalogue)", patchPieces(makeShape("box-with-cavity").surfaces), repeats);
+  sheetRow("ellipsoid 4 x 3 x 2 (inside its rim)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), repeats);
+  sheetRow("ellipsoid 10 x 9 x 1 (inside its rim)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(10, 9, 1)).surfaces), repeats);
   // Revolved solids through the 3D tracer: curved sides cut into sliver pieces (one side of
   // a sheet per surface), arcs of reflex edges.
   for (const auto& [profile, degrees] : { std::pair<std::string, double>{ "rectangle", 90.0 }, { "l-shape", 90.0 },
@@ -550,6 +562,7 @@ int main(int argc, char** argv)
     fitRow("L prism (a reflex edge)", lPrism(1.0, 2.5), tolerance, repeats);
     fitRow("notched cube (reflex corner)", patchPieces(makeShape("notched-cube").surfaces), tolerance, repeats);
     fitRow("stepped block (rims)", patchPieces(makeShape("stepped-block").surfaces), tolerance, repeats);
+    fitRow("ellipsoid 4 x 3 x 2", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), tolerance, repeats);
   }
 
   const int turns = quick ? 6 : 30;
@@ -563,6 +576,7 @@ int main(int argc, char** argv)
   sheetInvarianceRow("notched cube (reflex corner)", patchPieces(makeShape("notched-cube").surfaces), turns);
   sheetInvarianceRow("stepped block (rims)", patchPieces(makeShape("stepped-block").surfaces), turns);
   sheetInvarianceRow("box with a cubic cavity (catalogue)", patchPieces(makeShape("box-with-cavity").surfaces), turns);
+  sheetInvarianceRow("ellipsoid 4 x 3 x 2", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), turns);
   std::mt19937 turnRng(5);
   sheetInvarianceRow("random frustum, 10-gon", randomFrustum(turnRng, 10), turns);
 

@@ -389,18 +389,18 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
     EXPECT_NE(message(patchPieces(ellipsoidSurfaces(axes, M_PI / 6, 2))).find("no convex vertex and no rim"),
       std::string::npos)
       << axes.transpose();
-  // An ellipsoid whose poles lie on its longest axis: the rim passes through them (collapsed
-  // sides of the patches), which it cannot cross yet.
-  EXPECT_NE(message(patchPieces(ellipsoidSurfaces(Vec3(1, 1.5, 2), 0.0, 2))).find("the rim through"), std::string::npos);
+
 }
 
 // The ellipsoid with semi-axes a > b > c (any order of the axes): no seam, one closed rim,
 // the ellipse in the plane of the shortest axis with semi-axes (a² − c²)/a and (b² − c²)/b,
 // r = c·√(1 − x²/(a² − c²) − y²/(b² − c²)) (issue 10's closed form); every rim ball touches
-// once and osculates. Patch layouts: poles on the shortest axis (elsewhere they lie on the
-// rim's touch curve: refused, UnsupportedSolidsAreRefusedByName) with the meridians cut off
+// once and osculates. Patch layouts: poles on the shortest axis with the meridians cut off
 // the equator, below it, or on it (the rim's touch then runs along the patches' common
-// side); x, y or z shortest; flat ones; moved, turned, scaled and reweighted.
+// side); poles on the longest or middle axis (the rim passes through them: stepped over;
+// verified by the closed form only — next to a pole the verification's footpoint search
+// misses an osculating ball's touch, README limits); x, y or z shortest; flat ones; moved,
+// turned, scaled and reweighted.
 TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
 {
   struct Case
@@ -412,7 +412,8 @@ TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
   };
   const std::vector<Case> cases{ { Vec3(2, 1.5, 1), M_PI / 6, 2, false }, { Vec3(2, 1.5, 1), 0.0, 2, false },
     { Vec3(2, 1.5, 1), -0.35, 2, false }, { Vec3(1, 2, 1.5), M_PI / 6, 0, false }, { Vec3(1.5, 1, 2), 0.2, 1, false },
-    { Vec3(5, 4.5, 0.5), 0.0, 2, false }, { Vec3(1, 2, 1.5), 0.0, 0, true } };
+    { Vec3(5, 4.5, 0.5), 0.0, 2, false }, { Vec3(1, 1.5, 2), 0.0, 2, false }, { Vec3(1, 1.5, 2), 0.3, 1, false },
+    { Vec3(2, 1.5, 1), 0.5, 0, false }, { Vec3(1, 2, 1.5), 0.0, 0, true } };
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const Vec3 offset(3e4, -6e4, 1.5e4);
   const double scale = 1e-3;
@@ -461,6 +462,8 @@ TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
     EXPECT_LE(longest, MAT3DOptions().maxStep * (1 + 1e-9)) << what.str();
     // (Verified once here: a ball osculating a face takes the footpoint search milliseconds.)
     EXPECT_TRUE(topologyProblems(t).empty()) << what.str();
+    if (c.polar != shortest)
+      continue;
     const PatchBoundary boundary(*t.boundary);
     const MedialVerification v =
       verifyMedialComplex(boundary, t.mat.complex(), 1, std::max(1e-15, 64.0 * frame.inputRounding()));

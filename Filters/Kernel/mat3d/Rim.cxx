@@ -99,12 +99,16 @@ private:
   Vec3 ridgeTangent(int f, const Vec2& q, const Vec2& reference, const Vec3& previous) const;
   bool advance(int f, Vec2& q, Vec2& reference, const Vec3& tangent, double s) const;
   Rim traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) const;
+  bool nearPole(int f, const Vec3& p, double near, Vec3& pole) const;
+  bool acrossPole(const Rim& rim, int& f, Vec2& q, Vec2& reference) const;
   bool onTracedRim(const Vec3& touch, const std::vector<Rim>& rims) const;
 
   const RimSearch& S;
   const std::vector<Generator3D>& Gen;
   double Size;
-  double OnFace = 1e-9 * Size; // a touch this close outside its face is on it
+  // A touch this close outside its face is on it: a ridge along a face side is placed only
+  // to about 1e-9 of the size near a pole, where the side's parameters crowd.
+  double OnFace = 1e-8 * Size;
 };
 
 // Newton onto the ridge from q, along the ridge function's gradient (the step of least
@@ -191,6 +195,91 @@ bool RimTracer::onTracedRim(const Vec3& touch, const std::vector<Rim>& rims) con
   return false;
 }
 
+// A side of face f collapsed to a point (a pole of a surface of revolution) within `near`
+// of p.
+bool RimTracer::nearPole(int f, const Vec3& p, double near, Vec3& pole) const
+{
+  const BezierPatch& patch = S.boundary->faces()[f].patch;
+  const Vec2 ends[4][2] = { { Vec2(0, 0), Vec2(1, 0) }, { Vec2(1, 0), Vec2(1, 1) }, { Vec2(0, 1), Vec2(1, 1) },
+    { Vec2(0, 0), Vec2(0, 1) } };
+  for (const auto& side : ends)
+  {
+    const Vec3 a = patch.evaluate(side[0].x(), side[0].y()), b = patch.evaluate(side[1].x(), side[1].y()),
+               m = patch.evaluate(0.5 * (side[0].x() + side[1].x()), 0.5 * (side[0].y() + side[1].y()));
+    if ((a - b).norm() <= 1e-12 * Size && (a - m).norm() <= 1e-12 * Size && (a - p).norm() <= near)
+    {
+      pole = a;
+      return true;
+    }
+  }
+  return false;
+}
+
+// A rim through a pole: the faces' parameters are singular there, so the ridge cannot be
+// followed onto it. It is stepped over: from the ball just before the pole to the ridge
+// point as far beyond it on one of the faces that meet there, the one whose ridge goes on
+// ahead (the pole's own ball is left out: the step, twice the way left to the pole, has
+// a chord within the tolerance, √(2·tolerance·r) for a centre curve bending by 1/r).
+bool RimTracer::acrossPole(const Rim& rim, int& f, Vec2& q, Vec2& reference) const
+{
+  // The way the touches came (the ridge's own tangent is lost near the pole, where the
+  // ridge function's gradient is taken in crowded parameters).
+  if (rim.balls.size() < 2)
+    return false;
+  const RimBall& here = rim.balls.back();
+  Vec3 pole;
+  const double near = std::sqrt(2.0 * S.tolerance * Size * here.r);
+  if (!nearPole(f, here.touch, near, pole))
+    return false;
+  const Touch3D t = Gen[f].evaluate(q);
+  const Vec3 across = t.dPoint * reference; // k1's direction, in space
+  const double gap = (pole - here.touch).norm();
+  // Over a baseline of several gaps (the last balls before a pole are close together and
+  // their touches placed only to the crowded parameters' precision), in the tangent plane.
+  size_t back = rim.balls.size() - 2;
+  while (back > 0 && (here.touch - rim.balls[back].touch).norm() < 4.0 * gap)
+    --back;
+  const Vec3 normal = (here.x - here.touch).normalized();
+  Vec3 tangent = here.touch - rim.balls[back].touch;
+  tangent = (tangent - normal * normal.dot(tangent)).normalized();
+#ifdef EXACTMAT_RIM_DEBUG
+  std::fprintf(stderr, "pole %s from %s gap %g tangent %s\n", format(pole).c_str(), format(here.touch).c_str(), gap,
+    format(tangent).c_str());
+#endif
+  for (double beyond : { near, 4.0 * gap, 2.0 * gap, gap }) // (far enough for plain steps to go on)
+  {
+    const Vec3 target = pole + beyond * tangent;
+    for (int g = 0; g < static_cast<int>(S.boundary->faces().size()); ++g)
+    {
+      Vec3 other;
+      if (Gen[g].planar() || !nearPole(g, pole, 1e-12 * Size, other))
+        continue;
+      Vec2 there = Gen[g].parameterOf(target);
+      if (Gen[g].exitSide(there, OnFace) >= 0)
+        continue;
+      const Eigen::Matrix<double, 3, 2> d = Gen[g].evaluate(there).dPoint;
+      Vec2 ref = (d.transpose() * d).ldlt().solve(d.transpose() * across);
+      if (!toRidge(g, there, ref) || Gen[g].exitSide(there, OnFace) >= 0)
+        continue;
+      const RimBall next = ball(g, there);
+#ifdef EXACTMAT_RIM_DEBUG
+      std::fprintf(stderr, "pole: face %d beyond %g: touch %s ahead %g far %g\n", g, beyond, format(next.touch).c_str(),
+        (next.touch - pole).dot(tangent), (next.touch - pole).norm());
+#endif
+      // (Beyond the pole by about the way asked, not on it: the pole's own parameters are
+      // singular, its ridge direction undefined.)
+      if (!((next.touch - pole).dot(tangent) >= 0.5 * beyond) || (next.touch - pole).norm() > 2.0 * beyond + gap ||
+        !isMaximum(g, there) || !S.empty(next.x, next.r))
+        continue;
+      f = g;
+      q = there;
+      reference = ref;
+      return true;
+    }
+  }
+  return false;
+}
+
 Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) const
 {
   Rim rim;
@@ -201,9 +290,29 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
   double s = std::min(longest, 0.1 * start.r);
   double length = 0.0;
   int crossings = 0; // in a row, without a step between
+  size_t lastCount = 0;
+  int stalled = 0; // iterations without a new ball
   for (int n = 0; n < S.maxSteps; ++n)
   {
     const RimBall here = rim.balls.back();
+    stalled = rim.balls.size() == lastCount ? stalled + 1 : 0;
+    lastCount = rim.balls.size();
+    if (stalled > 200 || !tangent.allFinite() || !here.x.allFinite() || !std::isfinite(here.r))
+      fail("3D MAT: the rim through ", format(here.x), " (touching ", Gen[f].name(), ") makes no progress");
+    // Heading into a pole within a chord's reach: stepped over at once (steps onto it only
+    // crowd and zigzag in the singular parameters).
+    if (Vec3 pole; rim.balls.size() >= 2 && nearPole(f, here.touch, std::sqrt(2.0 * S.tolerance * Size * here.r), pole) &&
+      (pole - here.touch).dot(here.touch - rim.balls[rim.balls.size() - 2].touch) > 0.0 &&
+      acrossPole(rim, f, q, reference))
+    {
+      const RimBall beyond = ball(f, q);
+      length += (beyond.x - here.x).norm();
+      rim.balls.push_back(beyond);
+      tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch);
+      s = std::min(longest, 0.1 * beyond.r);
+      crossings = 0;
+      continue;
+    }
     Vec2 next = q, middle = q;
     Vec2 refNext = reference, refMiddle = reference;
     bool ok = advance(f, next, refNext, tangent, s) && advance(f, middle, refMiddle, tangent, 0.5 * s);
@@ -220,6 +329,16 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     if (!ok)
     {
       s *= 0.5;
+      if (s < 1e-10 * Size && acrossPole(rim, f, q, reference))
+      {
+        const RimBall beyond = ball(f, q);
+        length += (beyond.x - here.x).norm();
+        rim.balls.push_back(beyond);
+        tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch); // on, the way it jumped
+        s = std::min(longest, 0.1 * beyond.r);
+        crossings = 0;
+        continue;
+      }
       if (s < 1e-10 * Size)
         fail("3D MAT: the rim through ", format(here.x), " (radius ", here.r, ", touching ", Gen[f].name(),
           ") cannot be followed: its ridge ends or turns sharply there");
@@ -232,6 +351,16 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     const int side = Gen[f].exitSide(next, OnFace);
     if (side >= 0)
     {
+      if (crossings >= 8 && acrossPole(rim, f, q, reference))
+      {
+        const RimBall beyond = ball(f, q);
+        length += (beyond.x - here.x).norm();
+        rim.balls.push_back(beyond);
+        tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch); // on, the way it jumped
+        s = std::min(longest, 0.1 * beyond.r);
+        crossings = 0;
+        continue;
+      }
       if (++crossings > 8)
         fail("3D MAT: the rim through ", format(here.x), " keeps crossing sides of ", Gen[f].name(),
           " without moving");
@@ -254,6 +383,10 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
       }
       const RimBall border = ball(f, inside);
       const int beyond = S.smoothNeighbour(f, side);
+#ifdef EXACTMAT_RIM_DEBUG
+      std::fprintf(stderr, "cross face %d side %d at q (%g %g) lo %g of %g -> face %d, touch %s\n", f, side, inside.x(),
+        inside.y(), lo, s, beyond, format(border.touch).c_str());
+#endif
       if (beyond < 0)
       {
         rim.balls.push_back(border);
@@ -268,7 +401,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
       if (!toRidge(beyond, there, refThere))
         fail("3D MAT: the rim through ", format(border.x), " could not cross from ", Gen[f].name(), " onto ",
           Gen[beyond].name());
-      if (lo > 0.0)
+      if ((border.touch - here.touch).dot(tangent) > 1e-9 * Size) // (no ball that goes back, or nowhere)
       {
         length += (border.x - here.x).norm();
         rim.balls.push_back(border);
