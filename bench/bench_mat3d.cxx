@@ -19,9 +19,12 @@
 #include "shapes/Catalogue.h"
 #include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
+#include "shapes/Primitives.h"
 #include "shapes/RandomShapes.h"
 #include "sheets/SheetFit.h"
 #include "sheets/SheetInterpolation.h"
+
+#include <Eigen/Geometry>
 
 #include <chrono>
 #include <cmath>
@@ -398,6 +401,85 @@ void cavityRow(int count, unsigned seed)
   if (!firstRefusal.empty())
     std::fprintf(stderr, "seed %u, first refusal: %s\n", seed, firstRefusal.substr(0, 240).c_str());
 }
+// Random triaxial ellipsoids (semi-axes 0.5–3.5, patch layouts with the meridians cut
+// anywhere in ±69° and the poles on the shortest axis or, one time in three or so, on a
+// random one — then on the rim), turned, scaled by 1e-3 … 1e3, moved up to 1e4 × the
+// scale, weights scaled by 1e±20: the rim and its sheet, every rim point and every 37th
+// sheet vertex checked against the exact boundary, the faces' coverage measured.
+void randomEllipsoidRow(int count, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int complete = 0, uncovered = 0, offPoints = 0, offAtPoles = 0, failedSheet = 0, refused = 0;
+  double worstOff = 0.0, worstShortfall = 0.0, ms = 0.0;
+  std::string firstUncovered, firstFailure;
+  for (int k = 0; k < count; ++k)
+  {
+    const Vec3 axes(0.5 + 3.0 * u(rng), 0.5 + 3.0 * u(rng), 0.5 + 3.0 * u(rng));
+    int shortest = 0;
+    axes.minCoeff(&shortest);
+    const double cut = -1.2 + 2.4 * u(rng);
+    const int polar = u(rng) < 0.7 ? shortest : static_cast<int>(3.0 * u(rng)) % 3;
+    const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(6.0 * u(rng), Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5).normalized()).toRotationMatrix();
+    const double scale = std::pow(10.0, -3.0 + 6.0 * u(rng)), offset = std::pow(10.0, 4.0 * u(rng)) * scale;
+    const std::vector<PatchPiece> pieces = movedPieces(patchPieces(ellipsoidSurfaces(axes, cut, polar)), turn, scale,
+      Vec3(offset, -offset, 0.3 * offset), std::pow(10.0, -20.0 + 40.0 * u(rng)));
+    const std::string name = "axes " + std::to_string(axes.x()) + " " + std::to_string(axes.y()) + " " +
+      std::to_string(axes.z()) + ", poles on " + std::to_string(polar);
+    const auto t0 = std::chrono::steady_clock::now();
+    try
+    {
+      const Boundary3D b = buildNormalised(pieces);
+      const MAT3D mat = computeMAT3D(b);
+      std::vector<std::pair<int, std::string>> failures;
+      const std::vector<MedialSheetMesh> meshes = interpolateSheets(b, mat, SheetOptions(), failures);
+      ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double rounding = std::max(1e-15, 64.0 * b.userFrame().inputRounding());
+      const PatchBoundary exact(b);
+      double worst = verifyMedialComplex(exact, mat.complex(), 1, rounding).maxDistanceError;
+      for (const MedialSheetMesh& mesh : meshes)
+        for (size_t i = 0; i < mesh.vertices.size(); i += 37)
+          worst = std::max(worst, std::abs(exact.distance(mesh.vertices[i].x) - mesh.vertices[i].r) / b.diagonal());
+      double shortfall = 0.0;
+      for (const FaceCoverage& c : sheetCoverage(b, meshes))
+        shortfall = std::max(shortfall, c.shortfall());
+      if (!failures.empty())
+      {
+        ++failedSheet;
+        if (firstFailure.empty())
+          firstFailure = name + ": " + failures.front().second;
+      }
+      else if (worst > 1e-9 + rounding)
+      {
+        ++(polar == shortest ? offPoints : offAtPoles);
+        worstOff = std::max(worstOff, worst);
+      }
+      else if (shortfall > 1e-3)
+      {
+        ++uncovered;
+        worstShortfall = std::max(worstShortfall, shortfall);
+        if (firstUncovered.empty())
+          firstUncovered = name + ": shortfall " + std::to_string(shortfall);
+      }
+      else
+        ++complete;
+    }
+    catch (const InputError& e)
+    {
+      ++refused;
+      if (firstFailure.empty())
+        firstFailure = name + ": " + e.what();
+    }
+  }
+  std::printf("| %d | %d | %d | %.1e | %d | %d (%.1e) | %d | %d | %.0f |\n", count, complete, uncovered, worstShortfall,
+    offPoints, offAtPoles, worstOff, failedSheet, refused, ms);
+  if (!firstUncovered.empty())
+    std::fprintf(stderr, "random ellipsoids, first not covered: %s\n", firstUncovered.c_str());
+  if (!firstFailure.empty())
+    std::fprintf(stderr, "random ellipsoids, first failure: %s\n", firstFailure.substr(0, 240).c_str());
+}
+
 ShapeParameters ellipsoidAxes(double width, double height, double length)
 {
   ShapeParameters p;
@@ -564,6 +646,12 @@ int main(int argc, char** argv)
     fitRow("stepped block (rims)", patchPieces(makeShape("stepped-block").surfaces), tolerance, repeats);
     fitRow("ellipsoid 4 x 3 x 2", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), tolerance, repeats);
   }
+
+  std::printf("\n## Random ellipsoids: rim and sheet (random axes, patch layouts, turned, moved, scaled, reweighted)\n\n");
+  std::printf("| solids | complete | faces not covered (> 1e-3) | largest shortfall | points off, poles off the rim | "
+              "points off, poles on the rim (largest) | sheet failed | refused | rim and sheet, total (ms) |\n"
+              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  randomEllipsoidRow(quick ? 10 : 60, 1);
 
   const int turns = quick ? 6 : 30;
   std::printf("\n## Sheets of moved, turned, scaled and reweighted solids (%d transformations each)\n\n", turns);

@@ -292,6 +292,19 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
   int crossings = 0; // in a row, without a step between
   size_t lastCount = 0;
   int stalled = 0; // iterations without a new ball
+  // A step over a pole (acrossPole), going on the way it jumped.
+  auto overPole = [&]() {
+    const RimBall here = rim.balls.back();
+    if (!acrossPole(rim, f, q, reference))
+      return false;
+    const RimBall beyond = ball(f, q);
+    length += (beyond.x - here.x).norm();
+    rim.balls.push_back(beyond);
+    tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch);
+    s = std::min(longest, 0.1 * beyond.r);
+    crossings = 0;
+    return true;
+  };
   for (int n = 0; n < S.maxSteps; ++n)
   {
     const RimBall here = rim.balls.back();
@@ -303,16 +316,8 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     // crowd and zigzag in the singular parameters).
     if (Vec3 pole; rim.balls.size() >= 2 && nearPole(f, here.touch, std::sqrt(2.0 * S.tolerance * Size * here.r), pole) &&
       (pole - here.touch).dot(here.touch - rim.balls[rim.balls.size() - 2].touch) > 0.0 &&
-      acrossPole(rim, f, q, reference))
-    {
-      const RimBall beyond = ball(f, q);
-      length += (beyond.x - here.x).norm();
-      rim.balls.push_back(beyond);
-      tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch);
-      s = std::min(longest, 0.1 * beyond.r);
-      crossings = 0;
+      overPole())
       continue;
-    }
     Vec2 next = q, middle = q;
     Vec2 refNext = reference, refMiddle = reference;
     bool ok = advance(f, next, refNext, tangent, s) && advance(f, middle, refMiddle, tangent, 0.5 * s);
@@ -329,16 +334,8 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     if (!ok)
     {
       s *= 0.5;
-      if (s < 1e-10 * Size && acrossPole(rim, f, q, reference))
-      {
-        const RimBall beyond = ball(f, q);
-        length += (beyond.x - here.x).norm();
-        rim.balls.push_back(beyond);
-        tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch); // on, the way it jumped
-        s = std::min(longest, 0.1 * beyond.r);
-        crossings = 0;
+      if (s < 1e-10 * Size && overPole())
         continue;
-      }
       if (s < 1e-10 * Size)
         fail("3D MAT: the rim through ", format(here.x), " (radius ", here.r, ", touching ", Gen[f].name(),
           ") cannot be followed: its ridge ends or turns sharply there");
@@ -351,16 +348,8 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     const int side = Gen[f].exitSide(next, OnFace);
     if (side >= 0)
     {
-      if (crossings >= 8 && acrossPole(rim, f, q, reference))
-      {
-        const RimBall beyond = ball(f, q);
-        length += (beyond.x - here.x).norm();
-        rim.balls.push_back(beyond);
-        tangent = ridgeTangent(f, q, reference, beyond.touch - here.touch); // on, the way it jumped
-        s = std::min(longest, 0.1 * beyond.r);
-        crossings = 0;
+      if (crossings >= 8 && overPole())
         continue;
-      }
       if (++crossings > 8)
         fail("3D MAT: the rim through ", format(here.x), " keeps crossing sides of ", Gen[f].name(),
           " without moving");
