@@ -15,6 +15,7 @@
 #include "shapes/Moved.h"
 #include "shapes/Polyhedra.h"
 #include "shapes/Primitives.h"
+#include "EllipsoidMAT.h"
 #include "shapes/RandomShapes.h"
 #include "sheets/SheetInterpolation.h"
 
@@ -242,16 +243,9 @@ TEST(Sheets, EllipsoidSheetIsTheClosedForm)
         x = turn.transpose() * (x - offset) / scale;
         r /= scale;
       }
-      double inside = 1.0, rim = 0.0;
-      for (int k = 0; k < 3; ++k)
-        if (k != shortest)
-        {
-          const double squares = c.semiAxes(k) * c.semiAxes(k) - cc * cc;
-          inside -= x(k) * x(k) / squares;
-          rim += std::pow(x(k) * c.semiAxes(k) / squares, 2);
-        }
-      EXPECT_LE(rim, 1.0 + 1e-9 + rounding) << what.str() << " at " << x.transpose();
-      worst = std::max({ worst, std::abs(x(shortest)), std::abs(r - cc * std::sqrt(std::max(0.0, inside))) });
+      const EllipsoidMedialOffsets off = ellipsoidMedialOffsets(c.semiAxes, x, r);
+      EXPECT_LE(off.rimLevel, 1.0 + 1e-9 + rounding) << what.str() << " at " << x.transpose();
+      worst = std::max({ worst, off.offPlane, off.radiusError });
     }
     EXPECT_LE(worst / c.semiAxes.maxCoeff(), 1e-9 + rounding) << what.str();
     for (const auto& t : mesh.triangles)
@@ -265,7 +259,9 @@ TEST(Sheets, EllipsoidSheetIsTheClosedForm)
       continue;
     expectExactSheets(s, what.str(), 1e-3, 17);
     if (!c.moved && c.semiAxes.maxCoeff() < 4.0 * cc) // (a flat one leaves too few grid points inside)
+    {
       EXPECT_GE(ballCoverage(s, 12), 0.999) << what.str();
+    }
   }
 }
 
