@@ -22,6 +22,7 @@
 #include "shapes/Primitives.h"
 #include "shapes/RandomShapes.h"
 #include "sheets/SheetFit.h"
+#include "sheets/CentreCurveFootprint.h"
 #include "sheets/SheetInterpolation.h"
 
 #include <Eigen/Geometry>
@@ -117,7 +118,9 @@ void sheetRow(const std::string& name, const std::vector<PatchPiece>& pieces, in
   }
   const double verifyMs = msSince(t0);
   double shortfall = 0.0;
-  for (const FaceCoverage& c : sheetCoverage(b, meshes))
+  // (What the centre curves' circles cover counts too: a cylinder's side, a torus.)
+  const std::vector<double> footprints = centreCurveFootprints(b, medialGenerators(b), centreCurveTouches(mat));
+  for (const FaceCoverage& c : sheetCoverage(b, meshes, footprints))
     shortfall = std::max(shortfall, c.shortfall());
   std::printf("| %s | %zu | %d | %zu | %d | %d | %.2f | %.0f | %.1e | %d | %.1e | %.1e |\n", name.c_str(),
     b.faces().size(), filled, failures.size(), triangles, vertices, best, verifyMs, error, mismatches, shortfall,
@@ -509,6 +512,9 @@ int main(int argc, char** argv)
   row("box with a free-form top", boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5), repeats);
   row("ellipsoid 4 x 3 x 2 (a rim, no seam)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), repeats);
   row("ellipsoid 10 x 9 x 1 (a rim, no seam)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(10, 9, 1)).surfaces), repeats);
+  row("cylinder r 1, length 3 (its axis: a centre curve)", patchPieces(makeShape("cylinder").surfaces), repeats);
+  row("torus 2, 0.5 (its core: a closed centre curve)", patchPieces(makeShape("torus").surfaces), repeats);
+  row("prolate spheroid 4 x 2 x 2 (its axis)", patchPieces(ellipsoidSurfaces(Vec3(2, 1, 1), M_PI / 6, 2)), repeats);
   std::mt19937 rng(3);
   for (int n : { 6, 12 })
     row("random frustum, " + std::to_string(n) + "-gon", randomFrustum(rng, n), repeats);
@@ -622,6 +628,8 @@ int main(int argc, char** argv)
   sheetRow("box with a cubic cavity (catalogue)", patchPieces(makeShape("box-with-cavity").surfaces), repeats);
   sheetRow("ellipsoid 4 x 3 x 2 (inside its rim)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), repeats);
   sheetRow("ellipsoid 10 x 9 x 1 (inside its rim)", patchPieces(makeShape("ellipsoid", ellipsoidAxes(10, 9, 1)).surfaces), repeats);
+  sheetRow("cylinder r 1, length 3 (two cones)", patchPieces(makeShape("cylinder").surfaces), repeats);
+  sheetRow("torus 2, 0.5 (no sheet: the core covers it)", patchPieces(makeShape("torus").surfaces), repeats);
   // Revolved solids through the 3D tracer: curved sides cut into sliver pieces (one side of
   // a sheet per surface), arcs of reflex edges.
   for (const auto& [profile, degrees] : { std::pair<std::string, double>{ "rectangle", 90.0 }, { "l-shape", 90.0 },

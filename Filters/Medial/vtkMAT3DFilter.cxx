@@ -80,6 +80,7 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   result.count("NumberOfJunctions", junctions);
   result.count("NumberOfSeams", static_cast<int>(mat.seams.size()));
   result.count("NumberOfSkeletalEdges", static_cast<int>(mat.skeletalEdges.size()));
+  result.count("NumberOfCentreCurves", static_cast<int>(mat.centreCurves.size()));
   result.count("NumberOfSheets", static_cast<int>(mat.sheets.size()));
   // The sheets' topology, for vtkSheetInterpolator: face pair and bounding elements.
   vtkNew<vtkStringArray> sheetGovernors, sheetSeams, sheetEdges;
@@ -132,6 +133,7 @@ void vtkMAT3DFilter::PublishFigures(const exactmat::PartResult& figures)
   this->NumberOfJunctions = static_cast<int>(figures.get("NumberOfJunctions"));
   this->NumberOfSeams = static_cast<int>(figures.get("NumberOfSeams"));
   this->NumberOfSkeletalEdges = static_cast<int>(figures.get("NumberOfSkeletalEdges"));
+  this->NumberOfCentreCurves = static_cast<int>(figures.get("NumberOfCentreCurves"));
   this->NumberOfSheets = static_cast<int>(figures.get("NumberOfSheets"));
   this->NumberOfVerifiedPoints = static_cast<int>(figures.get("NumberOfVerifiedPoints"));
   this->NumberOfTouchpointMismatches =
@@ -152,5 +154,6 @@ void vtkMAT3DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfJunctions: " << this->NumberOfJunctions << "\n";
   os << indent << "NumberOfSeams: " << this->NumberOfSeams << "\n";
   os << indent << "NumberOfSkeletalEdges: " << this->NumberOfSkeletalEdges << "\n";
+  os << indent << "NumberOfCentreCurves: " << this->NumberOfCentreCurves << "\n";
   os << indent << "NumberOfTopologyProblems: " << this->NumberOfTopologyProblems << "\n";
 }

@@ -84,6 +84,9 @@ public:
   vtkGetMacro(NumberOfSeams, int);
   /// Rims: skeletal edges where a sheet of two reflex edges closes at their common corner.
   vtkGetMacro(NumberOfSkeletalEdges, int);
+  /// Curves of centres of balls touching a face along a whole circle: a cylinder's axis,
+  /// a torus' core (CentreCurve polylines of CircleCentre points).
+  vtkGetMacro(NumberOfCentreCurves, int);
   /// Nodes of the seam graph with the wrong number of seams (a junction of four touchpoints
   /// meets four): the graph's own check, part of the verification (0 when it passes).
   vtkGetMacro(NumberOfTopologyProblems, int);
@@ -110,6 +113,7 @@ protected:
   int NumberOfJunctions = 0;
   int NumberOfSeams = 0;
   int NumberOfSkeletalEdges = 0;
+  int NumberOfCentreCurves = 0;
   int NumberOfTopologyProblems = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;

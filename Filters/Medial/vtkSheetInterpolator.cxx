@@ -12,6 +12,8 @@
 #include "common/InputError.h"
 #include "mat3d/PatchBoundary.h"
 #include "medial/Verification.h"
+#include "sheets/CapSheet.h"
+#include "sheets/CentreCurveFootprint.h"
 #include "sheets/RimSheet.h"
 #include "sheets/SheetFit.h"
 #include "sheets/SheetInterpolation.h"
@@ -534,6 +536,24 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   const PatchBoundary exact(boundary);
   options.exact = &exact;
   std::vector<SheetGroup> groups = groupSheets(boundary, generators, pairs);
+  // The cone sheets at the centre curves' ends (a cylinder's), each built whole: the groups
+  // from their convex edges are parts of them.
+  std::vector<MedialSheetMesh> caps;
+  std::vector<std::string> capErrors;
+  for (const CapEnd& end : capEnds(complex))
+  {
+    capErrors.emplace_back();
+    try
+    {
+      caps.push_back(interpolateCapSheet(boundary, generators, end, options));
+    }
+    catch (const InputError& e)
+    {
+      capErrors.back() = e.what();
+      caps.emplace_back();
+    }
+  }
+  dropCapGroups(groups, caps);
   std::map<int, int> sheetOfElement; // ElementId → SheetId
   std::vector<std::string> failures;
   std::vector<MedialSheetMesh> meshes; // for the coverage check
@@ -628,6 +648,25 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     filled.back().members = { { group.a, group.b } };
     groups.push_back(std::move(group));
     borders.push_back({ rim });
+  }
+  // The cone sheets, a group each (its cap and its canal face).
+  for (size_t k = 0; k < caps.size(); ++k)
+  {
+    SheetGroup group;
+    group.a = caps[k].members[0];
+    group.b = caps[k].members[1];
+    errors.push_back(capErrors[k]);
+    if (group.a.empty() || group.b.empty())
+    {
+      // (Failed: named by the end's faces, which the error message gives.)
+      for (int f = 0; f < static_cast<int>(boundary.faces().size()); ++f)
+        group.a.push_back(f);
+      group.b = group.a;
+    }
+    filled.push_back(std::move(caps[k]));
+    filled.back().members = { { group.a, group.b } };
+    groups.push_back(std::move(group));
+    borders.emplace_back();
   }
   for (size_t k = labels.size(); k < groups.size(); ++k)
     labels.push_back(sideLabel(groups[k]));
@@ -800,7 +839,8 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   figures.coverage = 0.0;
   std::string uncovered;
   int uncoveredFaces = 0;
-  for (const FaceCoverage& c : sheetCoverage(boundary, meshes))
+  const std::vector<double> footprints = centreCurveFootprints(boundary, generators, centreCurveTouches(complex));
+  for (const FaceCoverage& c : sheetCoverage(boundary, meshes, footprints))
   {
     figures.coverage = std::max(figures.coverage, c.shortfall());
     if (c.shortfall() > 10.0 * this->Tolerance + 1e-9 && ++uncoveredFaces == 1)

@@ -21,7 +21,7 @@ using namespace exactmat;
 TEST(vtkNURBSSource, EveryCatalogueShapeProducesAValidBoundary)
 {
   vtkNew<vtkNURBSSource> source;
-  ASSERT_EQ(vtkNURBSSource::GetNumberOfCatalogueShapes(), 20);
+  ASSERT_EQ(vtkNURBSSource::GetNumberOfCatalogueShapes(), 21);
   for (int i = 0; i < vtkNURBSSource::GetNumberOfCatalogueShapes(); ++i)
   {
     const std::string name = vtkNURBSSource::GetCatalogueShapeName(i);

@@ -17,6 +17,7 @@
 #include "shapes/Primitives.h"
 #include "EllipsoidMAT.h"
 #include "shapes/RandomShapes.h"
+#include "sheets/CentreCurveFootprint.h"
 #include "sheets/SheetInterpolation.h"
 
 #include <Eigen/Geometry>
@@ -86,7 +87,9 @@ void expectExactSheets(const Sheets& s, const std::string& what, double coverage
     EXPECT_LE(mesh.maxDeviation, 1e-4) << what;
   }
   EXPECT_GT(vertices, 0) << what;
-  for (const FaceCoverage& c : sheetCoverage(*s.boundary, s.meshes))
+  const std::vector<double> footprints =
+    centreCurveFootprints(*s.boundary, medialGenerators(*s.boundary), centreCurveTouches(s.mat));
+  for (const FaceCoverage& c : sheetCoverage(*s.boundary, s.meshes, footprints))
     EXPECT_LE(c.shortfall(), coverage) << what << ": face " << c.face << " covered " << c.covered << " of " << c.area;
 }
 
@@ -263,6 +266,56 @@ TEST(Sheets, EllipsoidSheetIsTheClosedForm)
       EXPECT_GE(ballCoverage(s, 12), 0.999) << what.str();
     }
   }
+}
+
+// A cylinder of radius R and length 2h > 2R: two cone sheets between each cap and the
+// side, r = R − ρ = h − |z| (ρ the distance from the axis), from the caps' edges (radius 0)
+// to the apexes where the axis ends; the side's middle band is touched by the axis' circles
+// (counted by the coverage with the centre curve's footprint). A torus has no sheet: its
+// faces are covered by the core's circles alone. Moved, turned, scaled and reweighted too.
+TEST(Sheets, CylinderConesAreTheClosedFormAndTheAxisCoversTheSide)
+{
+  const Placement far = farFromTheOrigin();
+  for (const auto& [moved, length] : { std::make_pair(false, 3.0), std::make_pair(true, 5.0) })
+    {
+      ShapeParameters p;
+      p.length = length;
+      std::vector<PatchPiece> pieces = patchPieces(makeShape("cylinder", p).surfaces);
+      if (moved)
+        pieces = movedPieces(pieces, far);
+      const std::string what = "cylinder of length " + std::to_string(length) + (moved ? ", moved" : "");
+      const Sheets s = sheetsOf(pieces);
+      ASSERT_EQ(s.meshes.size(), 2u) << what;
+      expectExactSheets(s, what, 1e-4);
+      const Normalisation& frame = s.boundary->userFrame();
+      double worst = 0.0;
+      for (const MedialSheetMesh& mesh : s.meshes)
+      {
+        EXPECT_GE(mesh.apex, 0) << what;
+        for (const SheetVertex& v : mesh.vertices)
+        {
+          Vec3 x = frame.toUser(v.x);
+          double r = frame.lengthToUser(v.r);
+          if (moved)
+          {
+            x = far.rotation.transpose() * (x - far.offset) / far.scale;
+            r /= far.scale;
+          }
+          const double rho = std::hypot(x.x(), x.y());
+          worst = std::max({ worst, std::abs(r - (p.radius - rho)), std::abs(r - (0.5 * length - std::abs(x.z()))) });
+        }
+      }
+      EXPECT_LE(worst / length, 1e-9 + 64.0 * frame.inputRounding()) << what;
+    }
+  const Sheets torus = sheetsOf(patchPieces(makeShape("torus").surfaces));
+  EXPECT_TRUE(torus.meshes.empty());
+  EXPECT_TRUE(torus.failures.empty());
+  const std::vector<double> footprints =
+    centreCurveFootprints(*torus.boundary, medialGenerators(*torus.boundary), centreCurveTouches(torus.mat));
+  const std::vector<FaceCoverage> coverage = sheetCoverage(*torus.boundary, torus.meshes, footprints);
+  EXPECT_EQ(coverage.size(), 16u);
+  for (const FaceCoverage& c : coverage)
+    EXPECT_LE(c.shortfall(), 1e-4) << "torus face " << c.face << " covered " << c.covered << " of " << c.area;
 }
 
 TEST(Sheets, BoxSheetsAreTheClosedForm)

@@ -352,8 +352,9 @@ class PythonPackage(unittest.TestCase):
         governors = out.GetCellData().GetAbstractArray("Governors")
         tokens = [t for i in range(governors.GetNumberOfTuples()) for t in governors.GetValue(i).split(",")]
         self.assertTrue(any(t.count("/") == 2 for t in tokens))  # the reflex corner
-        # A cylinder has no seam: refused, and the reason reaches Python.
-        source.SetShapeName("cylinder")
+        # An extruded blob's seams are reached only from its rims (fin points, not traced
+        # yet): refused, and the reason reaches Python.
+        source.SetShapeName("extrusion")
         errors = exactmat.ErrorObserver().watch(mat)
         mat.Update()
         with self.assertRaisesRegex(exactmat.ExactMATError, r"no seam touches"):

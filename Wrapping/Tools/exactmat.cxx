@@ -826,6 +826,7 @@ int run3D(const Arguments& a)
   std::printf("  junctions           %d\n", mat->GetNumberOfJunctions());
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
   std::printf("  skeletal edges      %d (rims: where sheets end inside the solid)\n", mat->GetNumberOfSkeletalEdges());
+  std::printf("  centre curves       %d (axes: balls touching a whole circle)\n", mat->GetNumberOfCentreCurves());
   if (!a.sheets)
     std::printf("  sheets              %d (generator pairs and their bounding seams; not filled: --no-sheets)\n",
       mat->GetNumberOfSheets());
@@ -863,6 +864,8 @@ int run3D(const Arguments& a)
     auto count = [](int n, const char* noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); };
     const std::string title = "MAT of " + label + ": " + count(mat->GetNumberOfJunctions(), "junction") + ", " +
       count(mat->GetNumberOfSeams(), "seam") +
+      (mat->GetNumberOfSkeletalEdges() > 0 ? ", " + count(mat->GetNumberOfSkeletalEdges(), "rim") : std::string()) +
+      (mat->GetNumberOfCentreCurves() > 0 ? ", " + count(mat->GetNumberOfCentreCurves(), "centre curve") : std::string()) +
       (a.sheets ? ", " + count(sheets->GetNumberOfInterpolatedSheets(), "sheet") : std::string(" (sheets not filled)"));
     if (!writeSolidMATPicture(solid, out, a.png, title, error))
     {

@@ -4,6 +4,7 @@
 #include "common/InputError.h"
 #include "geometry/BoundingVolumeHierarchy.h"
 #include "geometry/ClosestPoint.h"
+#include "mat3d/CentreCurve.h"
 #include "mat3d/Rim.h"
 
 #include <algorithm>
@@ -105,6 +106,10 @@ private:
   int findNode(const Vec3& x, double merge = 0.0) const;
   void startFrom(int node);
   void addRims();
+  void addCentreCurves();
+  bool emptyOfAll(const Vec3& x, double r) const { return enteringFace(x, r) < 0; }
+  int enteringFace(const Vec3& x, double r) const;
+  int smoothNeighbour(int face, int side) const;
   MedialBall3D grownBall(int g, const Vec3& point, const Vec3& normal) const;
   std::vector<int> othersTouching(const MedialBall3D& ball) const;
   static double distanceToSeam(const MAT3DSeam& seam, const Vec3& x);
@@ -1898,6 +1903,101 @@ bool Tracer::restartFrom(int face)
   return false;
 }
 
+// A face entering a ball that touches the boundary tangentially (osculating a face at a
+// point, or along a circle), or −1 when it is empty: tested against the ball smaller by
+// 1e-6 of its radius, the tangency itself left out.
+int Tracer::enteringFace(const Vec3& x, double r) const
+{
+  const double radius = r * (1.0 - 1e-6) - Margin;
+  for (int f : Tree.candidatesWithin(x, radius))
+    if (Generators[f].polygon() ? Generators[f].distance(x) < radius : patchComesWithin(B.faces()[f].patch, x, radius))
+      return f;
+  return -1;
+}
+
+int Tracer::smoothNeighbour(int face, int side) const
+{
+  const auto it = SideEdge.find({ face, side });
+  if (it == SideEdge.end() || B.edges()[it->second].kind != VertexKind::Smooth)
+    return -1;
+  const Edge3D& e = B.edges()[it->second];
+  return e.faceA == face ? e.faceB : e.faceA;
+}
+
+// The centre curves of the canal faces (CentreCurve.h). Each end is a node of its own: a
+// ball touching a whole circle, and — where the curve stopped because the ball reached
+// another entity — that entity too (a cylinder's cap at the apex of its cone sheet). A
+// closed curve (a torus' core) starts and ends at a loop point.
+void Tracer::addCentreCurves()
+{
+  CentreCurveSearch search;
+  search.boundary = &B;
+  search.generators = &Generators;
+  search.size = Size;
+  search.tolerance = Options.tolerance;
+  search.maxStep = Options.maxStep;
+  search.maxSteps = Options.maxStepsPerSeam;
+  search.entering = [this](const Vec3& x, double r) { return enteringFace(x, r); };
+  search.smoothNeighbour = [this](int face, int side) { return smoothNeighbour(face, side); };
+  search.toUser = [this](const Vec3& x) { return B.userPoint(x); };
+  const double onFace = 1e-7 * Size;
+  for (const CentreCurve& curve : traceCentreCurves(search))
+  {
+    MAT3DCentreCurve out;
+    const size_t n = curve.balls.size();
+    std::set<int> faces;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const CircleBall& c = curve.balls[i];
+      MedialBall3D ball;
+      ball.generators = { c.face };
+      ball.q = { c.q };
+      ball.x = c.x;
+      ball.r = c.r;
+      out.balls.push_back(ball);
+      // The faces the circle lies on (those not known yet asked for their exact distance).
+      for (const Vec3& p : contactCircle(Generators[c.face], c.q, c.x, 16))
+        for (int f : Tree.candidatesWithin(p, onFace))
+          if (!faces.count(f) && Generators[f].distance(p) <= onFace)
+            faces.insert(f);
+    }
+    faces.insert(curve.balls.front().face);
+    out.faces.assign(faces.begin(), faces.end());
+    auto endNode = [&](const CircleBall& c, bool blocked) {
+      MAT3DNode node;
+      node.ball.generators = { c.face };
+      node.ball.q = { c.q };
+      node.ball.x = c.x;
+      node.ball.r = c.r;
+      node.circleEnd = true;
+      if (blocked)
+      {
+        // The other entities at the ball's surface (within 1e-6 of its radius: the end is
+        // bisected to 1e-13 of the size, the faces' closest points are exact).
+        for (int f : Tree.candidatesWithin(c.x, c.r * (1.0 + 1e-6)))
+          if (!faces.count(f) && Generators[f].distance(c.x) <= c.r * (1.0 + 1e-6))
+          {
+            node.ball.generators.push_back(f);
+            node.ball.q.push_back(Generators[f].parameterOf(Generators[f].nearestPoint(c.x)));
+          }
+      }
+      Result.nodes.push_back(node);
+      return static_cast<int>(Result.nodes.size()) - 1;
+    };
+    if (curve.closed)
+    {
+      out.startNode = out.endNode = endNode(curve.balls.front(), false);
+      Result.nodes.back().loopPoint = true;
+    }
+    else
+    {
+      out.startNode = endNode(curve.balls.front(), curve.frontBlocked);
+      out.endNode = endNode(curve.balls.back(), curve.backBlocked);
+    }
+    Result.centreCurves.push_back(std::move(out));
+  }
+}
+
 // The rims of the curved faces (Rim.h). A closed rim is a skeletal edge from and to a
 // point of its own (a loop point, as a closed seam has); a rim that ends — on a seam, at a
 // fin point, or at a sharp edge — is refused: rims meeting seams are not traced yet.
@@ -1910,21 +2010,9 @@ void Tracer::addRims()
   search.tolerance = Options.tolerance;
   search.maxStep = Options.maxStep;
   search.maxSteps = Options.maxStepsPerSeam;
-  search.empty = [this](const Vec3& x, double r) {
-    const double radius = r * (1.0 - 1e-6) - Margin;
-    for (int f : Tree.candidatesWithin(x, radius))
-      if (Generators[f].polygon() ? Generators[f].distance(x) < radius
-                                  : patchComesWithin(B.faces()[f].patch, x, radius))
-        return false;
-    return true;
-  };
-  search.smoothNeighbour = [this](int face, int side) {
-    const auto it = SideEdge.find({ face, side });
-    if (it == SideEdge.end() || B.edges()[it->second].kind != VertexKind::Smooth)
-      return -1;
-    const Edge3D& e = B.edges()[it->second];
-    return e.faceA == face ? e.faceB : e.faceA;
-  };
+  search.empty = [this](const Vec3& x, double r) { return emptyOfAll(x, r); };
+  search.smoothNeighbour = [this](int face, int side) { return smoothNeighbour(face, side); };
+  search.toUser = [this](const Vec3& x) { return B.userPoint(x); };
   for (const Rim& rim : traceRims(search))
   {
     const RimBall& start = rim.balls.front();
@@ -1973,9 +2061,10 @@ MAT3D Tracer::run()
     addNode(ball, v);
   }
   addRims();
+  addCentreCurves();
   if (Result.nodes.empty())
-    fail("3D MAT: the solid has no convex vertex and no rim: starting elsewhere (circles of contact: a "
-         "cylinder's axis, a torus' core) is not supported yet");
+    fail("3D MAT: the solid has no convex vertex, no rim and no circle of contact: starting elsewhere (a seam "
+         "no vertex leads to, on a solid with curved faces) is not supported yet");
   size_t started = 0;
   for (; started < Queue.size(); ++started)
     startFrom(Queue[started]);
@@ -2004,6 +2093,15 @@ MAT3D Tracer::run()
       for (const MedialBall3D& ball : rim.balls)
         for (int g : ball.generators)
           touched[root(g)] = true;
+    for (const MAT3DCentreCurve& curve : Result.centreCurves)
+    {
+      for (int f : curve.faces)
+        touched[root(f)] = true;
+      for (int n : { curve.startNode, curve.endNode })
+        for (int g : Result.nodes[n].ball.generators)
+          for (int f : Generators[g].faces())
+            touched[root(f)] = true;
+    }
   };
   markTouched();
   // A face no seam touches yet is tried once as a restart (each finds one seam; the
@@ -2063,6 +2161,11 @@ MAT3D Tracer::run()
     ++seamsAt[rim.startNode];
     ++seamsAt[rim.endNode];
   }
+  for (const MAT3DCentreCurve& curve : Result.centreCurves)
+  {
+    ++seamsAt[curve.startNode];
+    ++seamsAt[curve.endNode];
+  }
   std::vector<MAT3DNode> kept;
   for (size_t n = 0; n < Result.nodes.size(); ++n)
     if (seamsAt[n] > 0 || (Result.nodes[n].vertex < 0 && !Spliced.count(static_cast<int>(n))))
@@ -2080,6 +2183,11 @@ MAT3D Tracer::run()
   {
     rim.startNode = renumber[rim.startNode];
     rim.endNode = renumber[rim.endNode];
+  }
+  for (MAT3DCentreCurve& curve : Result.centreCurves)
+  {
+    curve.startNode = renumber[curve.startNode];
+    curve.endNode = renumber[curve.endNode];
   }
   // A junction's touchpoints: its generators' touches, those at one point counted once
   // (coplanar faces meeting at a smooth edge under the ball, a face at a reflex edge).
@@ -2114,6 +2222,9 @@ MAT3D Tracer::run()
         ball.touches = { B.vertices()[rim.vertex].point };
       else
         record(ball);
+  for (MAT3DCentreCurve& curve : Result.centreCurves)
+    for (MedialBall3D& ball : curve.balls)
+      record(ball);
   collectSheets();
   for (const Generator3D& g : Generators)
     Result.generators.push_back({ g.kind(), g.entity(), g.faces() });
@@ -2137,6 +2248,11 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
     ++degree[r.startNode];
     ++degree[r.endNode];
   }
+  for (const MAT3DCentreCurve& c : centreCurves)
+  {
+    ++degree[c.startNode];
+    ++degree[c.endNode];
+  }
   std::vector<std::string> problems;
   for (size_t n = 0; n < nodes.size(); ++n)
   {
@@ -2145,6 +2261,13 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
     // degenerate seam, along which all four keep touching, stands for several of them: then
     // at least two); a seam's end on a rim joins one seam and one rim; a vertex starts at
     // least one.
+    // (A centre curve's end: at least that curve.)
+    if (node.circleEnd)
+    {
+      if (degree[n] < 1)
+        problems.push_back("the centre curve's end at " + format(toUser(node.ball.x)) + " meets no curve");
+      continue;
+    }
     const int expected = node.vertex >= 0 || degenerate[n] ? -1
       : node.seamEnd || node.loopPoint                    ? 2
       : node.touchpoints == 4                             ? 4
@@ -2166,7 +2289,7 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
 int MAT3D::junctionCount() const
 {
   return static_cast<int>(
-    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd && !n.loopPoint; }));
+    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd && !n.loopPoint && !n.circleEnd; }));
 }
 
 MedialComplex MAT3D::complex() const
@@ -2177,13 +2300,15 @@ MedialComplex MAT3D::complex() const
     MedialPoint3D p;
     p.x = n.ball.x;
     p.radius = n.ball.r;
-    p.type = n.loopPoint                ? (n.touchpoints == 1 ? MedialPoint3DType::SkeletalEdge : MedialPoint3DType::Seam)
+    p.type = n.circleEnd                ? MedialPoint3DType::CircleCentre
+      : n.loopPoint                ? (n.touchpoints == 1 ? MedialPoint3DType::SkeletalEdge : MedialPoint3DType::Seam)
       : n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd
                                    : MedialPoint3DType::Junction;
-    p.contacts = n.vertex >= 0 ? 0 : n.touchpoints;
+    // (A ball touching a whole circle has no count of touchpoints: its distance is checked.)
+    p.contacts = n.vertex >= 0 || n.circleEnd ? 0 : n.touchpoints;
     p.touches = n.ball.touches;
     c.points.push_back(p);
-    if (n.vertex < 0 && !n.seamEnd && !n.loopPoint)
+    if (n.vertex < 0 && !n.seamEnd && !n.loopPoint && !n.circleEnd)
     {
       MedialElement e;
       e.type = MedialElementType::Junction;
@@ -2230,6 +2355,26 @@ MedialComplex MAT3D::complex() const
       e.points.push_back(static_cast<int>(c.points.size()) - 1);
     }
     e.points.push_back(rim.endNode);
+    c.elements.push_back(e);
+  }
+  for (const MAT3DCentreCurve& curve : centreCurves)
+  {
+    MedialElement e;
+    e.type = MedialElementType::CentreCurve;
+    e.governors = curve.faces;
+    e.points.push_back(curve.startNode);
+    for (size_t i = 1; i + 1 < curve.balls.size(); ++i)
+    {
+      MedialPoint3D p;
+      p.x = curve.balls[i].x;
+      p.radius = curve.balls[i].r;
+      p.type = MedialPoint3DType::CircleCentre;
+      p.contacts = 0;
+      p.touches = curve.balls[i].touches;
+      c.points.push_back(p);
+      e.points.push_back(static_cast<int>(c.points.size()) - 1);
+    }
+    e.points.push_back(curve.endNode);
     c.elements.push_back(e);
   }
   return c;

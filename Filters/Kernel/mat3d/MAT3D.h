@@ -21,11 +21,12 @@
 /// end (thesis app. C.2–C.3 as one code path).
 ///
 /// Supported today: solids with at least one convex edge ending at a vertex (polyhedra,
-/// stepped and notched blocks, free-form solids such as the pillow). Skeletal edges (the
-/// curvature criterion), a face touching one ball twice, seams reaching the end of a reflex
-/// edge at a corner that also has convex edges, and solids without such a vertex (the
-/// ellipsoid, the cylinder) are reported as InputError naming what is missing, never traced
-/// wrongly.
+/// stepped and notched blocks, free-form solids such as the pillow), closed rims of curved
+/// faces (Rim.h: the ellipsoid) and centre curves of canal faces (CentreCurve.h: a
+/// cylinder's axis, a torus' core). Rims that meet seams (fin points), a face touching one
+/// ball twice, seams reaching the end of a reflex edge at a corner that also has convex
+/// edges, and seams no vertex leads to on curved solids are reported as InputError naming
+/// what is missing, never traced wrongly.
 
 #include "mat3d/BallSystem.h"
 #include "medial/MedialComplex.h"
@@ -67,6 +68,10 @@ struct MAT3DNode
   /// Located only to about the square root of the rounding (where a degenerate seam loses a
   /// contact tangentially): a junction reached later within 1e-5 of the size is this one.
   bool imprecise = false;
+  /// Where a centre curve ends (its ball touches a whole circle of a face and, where the
+  /// curve was stopped by it, another entity: a cone sheet's apex), or a point of a closed
+  /// centre curve (loopPoint too).
+  bool circleEnd = false;
   int touchpoints = 0;   ///< distinct points the ball touches (a point touched by two faces once)
   Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
 };
@@ -91,6 +96,16 @@ struct MAT3DSkeletalEdge
   int vertex = -1;
   std::array<int, 2> generators{ { -1, -1 } }; ///< the pair whose touchpoints merged
   std::vector<MedialBall3D> balls;             ///< centre and radius only, start to end
+};
+
+/// A curve of centres of balls touching a face along a circle (CentreCurve.h): a cylinder's
+/// or cone's axis, a torus' core, a fillet's spine; from node to node (the same loop point
+/// when closed).
+struct MAT3DCentreCurve
+{
+  int startNode = -1, endNode = -1;
+  std::vector<int> faces;          ///< the faces its circles of contact lie on
+  std::vector<MedialBall3D> balls; ///< start to end; generators {the tracked touch's face}
 };
 
 /// A medial sheet's topology (for vtkSheetInterpolator): its generator pair and the
@@ -119,6 +134,7 @@ struct MAT3D
   std::vector<MAT3DNode> nodes;
   std::vector<MAT3DSeam> seams;
   std::vector<MAT3DSkeletalEdge> skeletalEdges;
+  std::vector<MAT3DCentreCurve> centreCurves;
   std::vector<MAT3DSheet> sheets;
 
   int junctionCount() const;
@@ -129,7 +145,8 @@ struct MAT3D
   std::vector<std::string> topologyProblems(const std::function<Vec3(const Vec3&)>& toUser) const;
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
   /// (sharing the node points), governors = the seam's start triplet of generators; a
-  /// SkeletalEdge polyline per skeletal edge (governors: the merged pair).
+  /// SkeletalEdge polyline per skeletal edge (governors: the merged pair); a CentreCurve
+  /// polyline of CircleCentre points per centre curve (governors: the faces it touches).
   MedialComplex complex() const;
 };
 

@@ -39,6 +39,33 @@ FaceCurvature faceCurvature(const Touch3D& touch)
 
 namespace
 {
+// The difference step of the ridge function, a length: 1e-3 of the curvature radius.
+double ridgeDifferenceStep(double k1, double size)
+{
+  return std::min(1e-4 * size, 1e-3 / k1);
+}
+} // namespace
+
+// The references are directions in the face's parameters: across a sharply curved face (a
+// flat ellipsoid's rim) k1's direction turns by more than a right angle between two
+// samples in space, while in the parameters it keeps its way.
+double ridgeFunction(const Generator3D& face, const Vec2& q, const Vec2& reference, double size)
+{
+  const Touch3D t = face.evaluate(q);
+  const FaceCurvature c = faceCurvature(t);
+  if (!(c.k1 > 0.0))
+    return NAN;
+  const Vec2 v = (t.dPoint * c.d1).dot(t.dPoint * reference) < 0.0 ? Vec2(-c.d1) : c.d1;
+  auto k1At = [&](const Vec2& p) { return faceCurvature(face.evaluate(p)).k1; };
+  // Richardson's fourth-order central difference: its bias (h⁴) keeps the ridge within
+  // rounding of the side it runs along (an ellipsoid cut at its equator); the second-order
+  // one moved it 1e-7 of the radius off, outside both faces.
+  const double h = ridgeDifferenceStep(c.k1, size);
+  return (8.0 * (k1At(q + h * v) - k1At(q - h * v)) - (k1At(q + 2.0 * h * v) - k1At(q - 2.0 * h * v))) / (12.0 * h);
+}
+
+namespace
+{
 
 class RimTracer
 {
@@ -53,27 +80,11 @@ public:
   std::vector<Rim> run();
 
 private:
-  // The difference step of the ridge function, a length: 1e-3 of the curvature radius.
-  double differenceStep(double k1) const { return std::min(1e-4 * Size, 1e-3 / k1); }
+  double differenceStep(double k1) const { return ridgeDifferenceStep(k1, Size); }
   double k1At(int f, const Vec2& q) const { return faceCurvature(Gen[f].evaluate(q)).k1; }
-  // dk1/ds along k1's own direction, turned along `reference` (the function's sign
-  // depends on that direction's orientation, which has none of its own). References are
-  // directions in the face's parameters: across a sharply curved face (a flat ellipsoid's
-  // rim) k1's direction turns by more than a right angle between two samples in space,
-  // while in the parameters it keeps its way.
   double ridge(int f, const Vec2& q, const Vec2& reference) const
   {
-    const Touch3D t = Gen[f].evaluate(q);
-    const FaceCurvature c = faceCurvature(t);
-    if (!(c.k1 > 0.0))
-      return NAN;
-    const Vec2 v = direction(t, c, reference);
-    // Richardson's fourth-order central difference: its bias (h⁴) keeps the ridge within
-    // rounding of the side it runs along (an ellipsoid cut at its equator); the second-order
-    // one moved it 1e-7 of the radius off, outside both faces.
-    const double h = differenceStep(c.k1);
-    return (8.0 * (k1At(f, q + h * v) - k1At(f, q - h * v)) - (k1At(f, q + 2.0 * h * v) - k1At(f, q - 2.0 * h * v))) /
-      (12.0 * h);
+    return ridgeFunction(Gen[f], q, reference, Size);
   }
   Vec2 ridgeGradient(int f, const Vec2& q, const Vec2& reference, const Touch3D& t, double k1) const
   {
@@ -102,6 +113,7 @@ private:
   bool nearPole(int f, const Vec3& p, double near, Vec3& pole) const;
   bool acrossPole(const Rim& rim, int& f, Vec2& q, Vec2& reference) const;
   bool onTracedRim(const Vec3& touch, const std::vector<Rim>& rims) const;
+  std::string where(const Vec3& x) const { return format(S.toUser ? S.toUser(x) : x); }
 
   const RimSearch& S;
   const std::vector<Generator3D>& Gen;
@@ -311,7 +323,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     stalled = rim.balls.size() == lastCount ? stalled + 1 : 0;
     lastCount = rim.balls.size();
     if (stalled > 200 || !tangent.allFinite() || !here.x.allFinite() || !std::isfinite(here.r))
-      fail("3D MAT: the rim through ", format(here.x), " (touching ", Gen[f].name(), ") makes no progress");
+      fail("3D MAT: the rim through ", where(here.x), " (touching ", Gen[f].name(), ") makes no progress");
     // Heading into a pole within a chord's reach: stepped over at once (steps onto it only
     // crowd and zigzag in the singular parameters).
     if (Vec3 pole; rim.balls.size() >= 2 && nearPole(f, here.touch, std::sqrt(2.0 * S.tolerance * Size * here.r), pole) &&
@@ -337,7 +349,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
       if (s < 1e-10 * Size && overPole())
         continue;
       if (s < 1e-10 * Size)
-        fail("3D MAT: the rim through ", format(here.x), " (radius ", here.r, ", touching ", Gen[f].name(),
+        fail("3D MAT: the rim through ", where(here.x), " (radius ", here.r, ", touching ", Gen[f].name(),
           ") cannot be followed: its ridge ends or turns sharply there");
       continue;
     }
@@ -351,7 +363,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
       if (crossings >= 8 && overPole())
         continue;
       if (++crossings > 8)
-        fail("3D MAT: the rim through ", format(here.x), " keeps crossing sides of ", Gen[f].name(),
+        fail("3D MAT: the rim through ", where(here.x), " keeps crossing sides of ", Gen[f].name(),
           " without moving");
       double lo = 0.0, hi = s;
       Vec2 inside = q;
@@ -388,7 +400,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
       Vec2 refThere = (dThere.transpose() * dThere).ldlt().solve(
         dThere.transpose() * (Gen[f].evaluate(inside).dPoint * refInside));
       if (!toRidge(beyond, there, refThere))
-        fail("3D MAT: the rim through ", format(border.x), " could not cross from ", Gen[f].name(), " onto ",
+        fail("3D MAT: the rim through ", where(border.x), " could not cross from ", Gen[f].name(), " onto ",
           Gen[beyond].name());
       if ((border.touch - here.touch).dot(tangent) > 1e-9 * Size) // (no ball that goes back, or nowhere)
       {
@@ -424,7 +436,7 @@ Rim RimTracer::traceFrom(const RimBall& start, Vec2 reference, Vec3 tangent) con
     tangent = ridgeTangent(f, q, reference, tangent);
     s = std::min(1.5 * s, longest);
   }
-  fail("3D MAT: the rim from ", format(start.x), " on ", Gen[start.face].name(), " takes more than ", S.maxSteps,
+  fail("3D MAT: the rim from ", where(start.x), " on ", Gen[start.face].name(), " takes more than ", S.maxSteps,
     " steps");
 }
 

@@ -35,6 +35,12 @@ struct FaceCurvature
 };
 FaceCurvature faceCurvature(const Touch3D& touch);
 
+/// The ridge function at q of a curved face: dκ1/ds along κ1's own direction, turned along
+/// `reference` (a direction in the face's parameters; the function's sign depends on that
+/// orientation, which κ1's direction has none of). A fourth-order central difference over
+/// min(1e-4·size, 1e-3/κ1); NaN where κ1 ≤ 0.
+double ridgeFunction(const Generator3D& face, const Vec2& q, const Vec2& reference, double size);
+
 struct RimBall
 {
   int face = -1;
@@ -66,6 +72,8 @@ struct RimSearch
   double tolerance = 1e-4; ///< chord deviation of the centre polyline, fraction of the size
   double maxStep = 0.05;   ///< longest step of the centre, fraction of the size
   int maxSteps = 200000;   ///< per rim (a runaway is an error)
+  /// Positions in error messages are mapped through this (to the user's frame) when set.
+  std::function<Vec3(const Vec3&)> toUser;
 };
 
 /// Every rim of the solid's curved faces: ridge points found where the ridge function

@@ -325,7 +325,7 @@ const std::vector<std::string>& catalogueNames()
   static const std::vector<std::string> names{ "rectangle", "rounded-rectangle", "circle",
     "ellipse", "annulus", "l-shape", "star", "blob", "spiral", "plate-with-holes",
     "narrow-passage", "box", "cylinder", "pillow", "extrusion", "revolution", "notched-cube", "stepped-block",
-    "box-with-cavity", "ellipsoid" };
+    "box-with-cavity", "ellipsoid", "torus" };
   return names;
 }
 
@@ -556,6 +556,16 @@ Shape makeShape(const std::string& name, const ShapeParameters& s)
       p = Vec4(x + 2.5 * s.radius * p.w(), 0.0, y, p.w());
     }
     shape.surfaces = { makeRevolution(NurbsCurve(profile.degree(), profile.knots(), pts)) };
+  }
+  else if (name == "torus")
+  {
+    requirePositive(w, "width", name);
+    requirePositive(s.thickness, "thickness", name);
+    if (!(s.thickness < w))
+      fail("torus: the thickness (the tube's diameter, ", s.thickness, ") must be less than the width (the core's, ",
+        w, ")");
+    shape.dimension = 3;
+    shape.surfaces = { torusSurface(0.5 * w, 0.5 * s.thickness) };
   }
   else
   {

@@ -46,7 +46,9 @@ struct Shape
 /// stepped-block (a width × height × length/2 base and a half-size block centred on top),
 /// box-with-cavity (the box with a cubic cavity of edge thickness, moved off centre along x
 /// by (width − thickness)/8), ellipsoid (semi-axes width/2, height/2, length/2; its MAT is a
-/// sheet bounded by a rim, no seam). New names go last: the ParaView plugin numbers them.
+/// sheet bounded by a rim, no seam), torus (about z: core radius width/2, tube radius
+/// thickness/2; its MAT is the core circle). New names go last: the ParaView plugin numbers
+/// them.
 const std::vector<std::string>& catalogueNames();
 
 /// Builds the named shape; throws InputError for an unknown name or parameters that make

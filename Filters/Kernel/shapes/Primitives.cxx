@@ -93,6 +93,15 @@ NurbsSurface makeRevolution(const NurbsCurve& profile)
   return NurbsSurface(profile.degree(), 2, profile.knots(), circle.knots(), n, m, std::move(net));
 }
 
+NurbsSurface torusSurface(double core, double tube)
+{
+  const NurbsCurve circle = makeArc(Vec3::Zero(), tube, 0.0, 2.0 * M_PI);
+  Vec4List points = circle.homogeneousPoints();
+  for (Vec4& p : points)
+    p = Vec4(p.x() + core * p.w(), 0.0, p.y(), p.w()); // (x, y) of the circle → (core + x, 0, y)
+  return makeRevolution(NurbsCurve(circle.degree(), circle.knots(), points));
+}
+
 std::vector<NurbsCurve> makeSawToothStrip(int corners)
 {
   const int teeth = std::max(2, corners / 2);

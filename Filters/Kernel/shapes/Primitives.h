@@ -30,6 +30,11 @@ NurbsSurface makeExtrusion(const NurbsCurve& profile, const Vec3& direction, dou
 /// follows the profile, v the full circle (rational quadratic, 4 spans).
 NurbsSurface makeRevolution(const NurbsCurve& profile);
 
+/// The torus about z with core radius `core` and tube radius `tube` (0 < tube < core): the
+/// tube's circle in the xz half-plane revolved (4 × 4 rational biquadratic patches). Its
+/// MAT is the core circle, every ball touching a whole circle of the tube.
+NurbsSurface torusSurface(double core, double tube);
+
 /// The ellipsoid with these semi-axes about the origin as eight rational biquadratic
 /// patches of the sphere's form of revolution, scaled: four quarter arcs about the polar
 /// axis (0 = x, 1 = y, 2 = z; 45°→135°, …) times two meridian arcs, −90° → `cutLatitude`

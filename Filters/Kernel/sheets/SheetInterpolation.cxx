@@ -1,4 +1,5 @@
 #include "sheets/SheetInterpolation.h"
+#include "sheets/CapSheet.h"
 #include "sheets/RimSheet.h"
 
 #include "sheets/TransitionSheets.h"
@@ -2001,6 +2002,24 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   SheetOptions checked = options;
   if (!checked.exact)
     checked.exact = &exact;
+  // The cone sheets at the centre curves' ends, each whole (the groups from its convex
+  // edges are parts of it).
+  std::vector<MedialSheetMesh> caps;
+  std::vector<std::string> capErrors;
+  for (const CapEnd& end : capEnds(mat))
+  {
+    capErrors.emplace_back();
+    try
+    {
+      caps.push_back(interpolateCapSheet(boundary, generators, end, checked));
+    }
+    catch (const InputError& e)
+    {
+      capErrors.back() = e.what();
+      caps.emplace_back();
+    }
+  }
+  dropCapGroups(groups, caps);
   std::vector<MedialSheetMesh> out;
   std::vector<std::vector<SheetBorderCurve>> borders;
   std::vector<std::string> errors;
@@ -2053,13 +2072,19 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
       out.emplace_back();
     }
   }
+  for (size_t k = 0; k < caps.size(); ++k)
+  {
+    out.push_back(std::move(caps[k]));
+    errors.push_back(capErrors[k]);
+  }
   for (size_t k = 0; k < errors.size(); ++k)
     if (!errors[k].empty())
       failures.emplace_back(static_cast<int>(k), errors[k]);
   return out;
 }
 
-std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes)
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
+  const std::vector<double>& footprints)
 {
   const int faces = static_cast<int>(boundary.faces().size());
   std::vector<int> group(faces);
@@ -2076,10 +2101,30 @@ std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::v
       for (const auto& t : mesh.triangles)
       {
         const Vec3& a = mesh.vertices[t[0]].touch[k];
+        const int at = k == 1 && mesh.apex >= 0 ? static_cast<int>(std::find(t.begin(), t.end(), mesh.apex) - t.begin()) : 3;
+        if (at < 3)
+        {
+          // The apex touches a whole circle: the triangle covers the strip between the
+          // circle and its other two corners' touches (b, c), from the circle's points
+          // nearest them.
+          const Vec3& b = mesh.vertices[t[(at + 1) % 3]].touch[1];
+          const Vec3& c = mesh.vertices[t[(at + 2) % 3]].touch[1];
+          auto onCircle = [&](const Vec3& p) {
+            Vec3 d = p - mesh.apexCircleCentre;
+            d -= mesh.apexCircleAxis * mesh.apexCircleAxis.dot(d);
+            return Vec3(mesh.apexCircleCentre + mesh.apexCircleRadius * d.normalized());
+          };
+          const Vec3 pb = onCircle(b), pc = onCircle(c);
+          covered[mesh.members[k].front()] +=
+            0.5 * ((b - pb).cross(c - pb).norm() + (c - pb).cross(pc - pb).norm());
+          continue;
+        }
         covered[mesh.members[k].front()] +=
           0.5 * (mesh.vertices[t[1]].touch[k] - a).cross(mesh.vertices[t[2]].touch[k] - a).norm();
       }
     }
+  for (int f = 0; f < faces && f < static_cast<int>(footprints.size()); ++f)
+    covered[group[f]] += footprints[f];
   std::vector<double> area(faces, 0.0);
   for (int f = 0; f < faces; ++f)
   {

@@ -84,6 +84,12 @@ struct MedialSheetMesh
   /// The exact balls at the domain centroids of the final triangles (where they solve):
   /// sheet points that are not vertices, to measure a fit between the vertices (SheetFit).
   std::vector<SheetVertex> checkPoints;
+  /// A vertex whose ball touches a whole circle of side 1 (a cone sheet's apex, where a
+  /// centre curve ends: CapSheet.h), or −1: the triangles at it cover the band between that
+  /// circle and their other corners' touches on side 1, not the fan their corners make.
+  int apex = -1;
+  Vec3 apexCircleCentre = Vec3::Zero(), apexCircleAxis = Vec3::UnitZ();
+  double apexCircleRadius = 0.0;
   double area() const;
 };
 
@@ -133,6 +139,9 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
 /// Completeness, independent of how the sheets were found: every point of a face has one
 /// maximal ball, so the sheets' touchpoint footprints on a face (or on coplanar faces that
 /// are one side) add up to its area. One entry per face or group of coplanar faces.
+/// `footprints` (optional, per face) adds what other elements cover (the circles of contact
+/// of centre curves: centreCurveFootprints). A sheet's triangles at its apex (a vertex
+/// touching a whole circle) count the band between that circle and their other corners.
 struct FaceCoverage
 {
   int face = -1;        ///< the face (the group's first)
@@ -140,6 +149,7 @@ struct FaceCoverage
   double covered = 0.0; ///< the footprints' total
   double shortfall() const { return area > 0.0 ? std::abs(covered - area) / area : 0.0; }
 };
-std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes);
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
+  const std::vector<double>& footprints = {});
 
 } // namespace exactmat

@@ -1,0 +1,441 @@
+#include "CapSheet.h"
+
+#include "common/Format.h"
+#include "common/InputError.h"
+#include "geometry/ClosestPoint.h"
+#include "geometry/DomainTriangulation.h"
+#include "mat3d/CentreCurve.h"
+#include "mat3d/PatchBoundary.h"
+
+#include <algorithm>
+#include <functional>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+namespace exactmat
+{
+
+namespace
+{
+
+// A ball of the sheet: touching the cap at `w` (plane coordinates) and the canal face at
+// `foot` (on face `face`, parameters `qFoot`).
+struct CapBall
+{
+  Vec2 w = Vec2::Zero();
+  Vec3 x = Vec3::Zero(), touch = Vec3::Zero(), foot = Vec3::Zero();
+  double r = 0.0;
+  int face = -1;
+};
+
+class CapSheetBuilder
+{
+public:
+  CapSheetBuilder(const Boundary3D& boundary, const std::vector<Generator3D>& generators, const CapEnd& end,
+    const SheetOptions& options)
+    : B(boundary)
+    , G(generators)
+    , End(end)
+    , Options(options)
+    , Size(boundary.diagonal())
+  {
+    if (!Options.exact)
+    {
+      Own = std::make_unique<PatchBoundary>(B);
+      Options.exact = Own.get();
+    }
+  }
+
+  MedialSheetMesh run();
+
+private:
+  std::string where() const
+  {
+    return "the cone sheet at the end " + format(B.userPoint(End.centre)) + " of a centre curve" +
+      (Cap >= 0 ? " (cap " + G[Cap].name() + ")" : "");
+  }
+  int faceThrough(const Vec3& p, bool planar) const;
+  double canalDistance(const Vec3& x, int& face, Vec3& foot) const;
+  bool solve(const Vec2& w, double guess, CapBall& ball) const;
+  std::vector<Vec2> border();
+
+  const Boundary3D& B;
+  const std::vector<Generator3D>& G;
+  const CapEnd& End;
+  SheetOptions Options;
+  double Size;
+  std::unique_ptr<PatchBoundary> Own;
+  int Cap = -1;
+  std::vector<int> CapSide;  // the cap's faces (coplanar pieces)
+  std::vector<int> Canal;    // the faces the end's circle lies on
+  std::vector<Box3> CanalBoxes;
+  Vec3List BorderPoints;     // the border loop's points (radius 0)
+};
+
+// The face (planar or curved, as asked) a boundary point lies on, nearest first; −1 if none.
+int CapSheetBuilder::faceThrough(const Vec3& p, bool planar) const
+{
+  int best = -1;
+  double nearest = 1e-7 * Size;
+  for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+    if (G[f].planar() == planar)
+      if (const double d = G[f].distance(p); d <= nearest)
+      {
+        nearest = d;
+        best = f;
+      }
+  return best;
+}
+
+// The distance from x to the canal face (the nearest of its pieces) and where.
+double CapSheetBuilder::canalDistance(const Vec3& x, int& face, Vec3& foot) const
+{
+  double best = INFINITY;
+  for (size_t k = 0; k < Canal.size(); ++k)
+  {
+    const int f = Canal[k];
+    if (distanceToBox(CanalBoxes[k], x) >= best)
+      continue;
+    const Vec3 p = G[f].nearestPoint(x);
+    if (const double d = (p - x).norm(); d < best)
+    {
+      best = d;
+      face = f;
+      foot = p;
+    }
+  }
+  return best;
+}
+
+// The ball touching the cap at w whose distance from the canal face is its radius: the
+// root of d(S + r·N) − r, which does not increase with r (d is 1-Lipschitz): bracketed
+// from 0, then Newton kept inside the bracket.
+bool CapSheetBuilder::solve(const Vec2& w, double guess, CapBall& ball) const
+{
+  const Touch3D t = G[Cap].evaluate(w);
+  ball.w = w;
+  ball.touch = t.point;
+  auto value = [&](double r, int& face, Vec3& foot) { return canalDistance(t.point + r * t.normal, face, foot) - r; };
+  // Newton from the guess (the neighbours' radius: two or three steps), kept inside the
+  // bracket found on the way; doubling while no upper end is known.
+  int face = -1;
+  Vec3 foot = Vec3::Zero();
+  double lo = 0.0, hi = INFINITY;
+  double r = guess > 0.0 ? guess : 1e-6 * Size;
+  for (int it = 0; it < 200; ++it)
+  {
+    const double f = value(r, face, foot);
+    if (!std::isfinite(f))
+      return false;
+    if (std::abs(f) <= 1e-15 * Size)
+      break;
+    (f > 0.0 ? lo : hi) = r;
+    if (hi - lo <= 1e-15 * Size)
+      break;
+    const double slope = (t.point + r * t.normal - foot).normalized().dot(t.normal) - 1.0;
+    double next = slope < -1e-12 ? r - f / slope : NAN;
+    if (!(next > lo && next < hi))
+      next = std::isinf(hi) ? 2.0 * r : 0.5 * (lo + hi);
+    r = next;
+  }
+  ball.r = r;
+  ball.x = t.point + r * t.normal;
+  ball.face = face;
+  ball.foot = foot;
+  return std::isfinite(r) && face >= 0;
+}
+
+// The cap's border loop in its plane coordinates: the sides of its faces that are convex
+// edges with the canal face, sampled within the tolerance and chained end to end.
+std::vector<Vec2> CapSheetBuilder::border()
+{
+  std::map<std::pair<int, int>, int> edgeAt; // (face, side) → edge
+  for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
+  {
+    edgeAt[{ B.edges()[e].faceA, B.edges()[e].sideA }] = e;
+    edgeAt[{ B.edges()[e].faceB, B.edges()[e].sideB }] = e;
+  }
+  const double chord = 0.25 * Options.tolerance * Size, longest = Options.maxEdge * Size;
+  std::vector<Vec3List> pieces;
+  for (int f : CapSide)
+    for (int s = 0; s < 4; ++s)
+    {
+      const BezierCurve side = B.faces()[f].patch.side(s);
+      if ((side.startPoint() - side.endPoint()).norm() <= 1e-12 * Size &&
+        (side.evaluate(0.5) - side.startPoint()).norm() <= 1e-12 * Size)
+        continue; // a collapsed side (a triangle's)
+      const auto it = edgeAt.find({ f, s });
+      if (it == edgeAt.end())
+        fail("3D MAT sheets: ", where(), ": side ", s, " of ", G[f].name(), " has no neighbour");
+      const Edge3D& edge = B.edges()[it->second];
+      const int other = edge.faceA == f ? edge.faceB : edge.faceA;
+      if (edge.kind == VertexKind::Smooth && std::count(CapSide.begin(), CapSide.end(), other))
+        continue;
+      if (edge.kind != VertexKind::Convex || !std::count(Canal.begin(), Canal.end(), other))
+        fail("3D MAT sheets: ", where(), ": ", G[f].name(), " meets ", G[other].name(), " at a ",
+          edge.kind == VertexKind::Reflex ? "reflex" : edge.kind == VertexKind::Convex ? "convex" : "smooth",
+          " edge: the sheet reaches more than the canal face there (not supported yet)");
+      // Adaptive samples: chords within a quarter of the tolerance, no longer than maxEdge.
+      Vec3List points{ side.startPoint() };
+      std::function<void(double, double, int)> split = [&](double t0, double t1, int depth) {
+        const Vec3 a = side.evaluate(t0), b = side.evaluate(t1), m = side.evaluate(0.5 * (t0 + t1));
+        const Vec3 e = b - a;
+        const double u = std::clamp((m - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
+        if (depth < 16 && ((a + u * e - m).norm() > chord || e.norm() > longest || depth < 2))
+        {
+          split(t0, 0.5 * (t0 + t1), depth + 1);
+          split(0.5 * (t0 + t1), t1, depth + 1);
+        }
+        else
+          points.push_back(b);
+      };
+      split(0.0, 1.0, 0);
+      pieces.push_back(std::move(points));
+    }
+  if (pieces.empty())
+    fail("3D MAT sheets: ", where(), ": the cap has no convex edge");
+  // Chained: each piece's end is the next one's start (either way round).
+  Vec3List loop = pieces.front();
+  std::vector<bool> used(pieces.size(), false);
+  used[0] = true;
+  const double join = 1e-7 * Size;
+  for (size_t n = 1; n < pieces.size(); ++n)
+  {
+    bool found = false;
+    for (size_t k = 0; k < pieces.size() && !found; ++k)
+    {
+      if (used[k])
+        continue;
+      Vec3List piece = pieces[k];
+      if ((piece.back() - loop.back()).norm() <= join)
+        std::reverse(piece.begin(), piece.end());
+      if ((piece.front() - loop.back()).norm() > join)
+        continue;
+      loop.insert(loop.end(), piece.begin() + 1, piece.end());
+      used[k] = found = true;
+    }
+    if (!found)
+      fail("3D MAT sheets: ", where(), ": the cap's convex edges do not form one loop (a cap with holes is not supported)");
+  }
+  if ((loop.back() - loop.front()).norm() > join)
+    fail("3D MAT sheets: ", where(), ": the cap's convex edges do not close");
+  loop.pop_back();
+  std::vector<Vec2> out;
+  for (const Vec3& p : loop)
+    out.push_back(G[Cap].parameterOf(p));
+  BorderPoints = loop;
+  return out;
+}
+
+MedialSheetMesh CapSheetBuilder::run()
+{
+  Cap = faceThrough(End.capTouch, true);
+  if (Cap < 0)
+    fail("3D MAT sheets: ", where(), ": its ball touches no planar face besides its circle (curved caps are not "
+      "supported yet)");
+  CapSide = sheetSide(B, G, Cap);
+  const int circleFace = faceThrough(End.circleTouch, false);
+  if (circleFace < 0)
+    fail("3D MAT sheets: ", where(), ": its circle of contact is on no curved face");
+  std::set<int> canal{ circleFace };
+  const Vec3List circle =
+    contactCircle(G[circleFace], G[circleFace].parameterOf(End.circleTouch), End.centre, 64);
+  for (const Vec3& p : circle)
+    for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+      if (!G[f].planar() && !canal.count(f) && G[f].distance(p) <= 1e-7 * Size)
+        canal.insert(f);
+  Canal.assign(canal.begin(), canal.end());
+  for (int f : Canal)
+    CanalBoxes.push_back(B.faces()[f].patch.boundingBox());
+  const std::vector<Vec2> loop = border();
+  std::unique_ptr<DomainTriangulation> domain;
+  try
+  {
+    domain = std::make_unique<DomainTriangulation>(std::vector<std::vector<Vec2>>{ loop });
+  }
+  catch (const InputError& e)
+  {
+    fail("3D MAT sheets: ", where(), ": the cap's border cannot be triangulated (", e.what(), ")");
+  }
+  MedialSheetMesh mesh;
+  std::vector<CapBall> balls;
+  for (size_t k = 0; k < loop.size(); ++k)
+  {
+    SheetVertex v;
+    v.x = BorderPoints[k];
+    v.r = 0.0;
+    v.touch = { { BorderPoints[k], BorderPoints[k] } };
+    v.q = { { loop[k], Vec2::Zero() } };
+    v.domain = loop[k];
+    v.border = v.convexEdge = true;
+    mesh.vertices.push_back(v);
+    CapBall b;
+    b.w = loop[k];
+    b.x = b.touch = b.foot = BorderPoints[k];
+    balls.push_back(b);
+  }
+  mesh.loops = 1;
+  mesh.loopSizes = { static_cast<int>(loop.size()) };
+  // The apex: the centre curve's end, a vertex of the sheet.
+  const Vec2 apex = G[Cap].parameterOf(End.capTouch);
+  if (domain->insert(apex) != static_cast<int>(mesh.vertices.size()))
+    fail("3D MAT sheets: ", where(), ": its apex is not inside the cap's border");
+  {
+    SheetVertex v;
+    v.x = End.centre;
+    v.r = End.radius;
+    v.touch = { { End.capTouch, End.circleTouch } };
+    v.q = { { apex, Vec2::Zero() } };
+    v.domain = apex;
+    v.source = End.id;
+    v.border = true; // (where the sheet meets the centre curve: its ball touches a circle)
+    mesh.apex = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.push_back(v);
+    CapBall b;
+    b.w = apex;
+    b.x = End.centre;
+    b.r = End.radius;
+    b.touch = End.capTouch;
+    b.foot = End.circleTouch;
+    b.face = circleFace;
+    balls.push_back(b);
+  }
+  Vec3 middle = Vec3::Zero();
+  for (const Vec3& p : circle)
+    middle += p;
+  middle /= static_cast<double>(circle.size());
+  mesh.apexCircleCentre = middle;
+  mesh.apexCircleAxis = (circle[16] - circle[0]).cross(circle[32] - circle[0]).normalized();
+  mesh.apexCircleRadius = (circle[0] - middle).norm();
+  const double tolerance = Options.tolerance * Size, longest = Options.maxEdge * Size;
+  std::map<std::array<int, 3>, std::pair<double, SheetVertex>> accepted;
+  for (int round = 0;; ++round)
+  {
+    if (round > 200)
+      fail("3D MAT sheets: ", where(), " is not refined within 200 rounds");
+    int inserted = 0;
+    mesh.maxDeviation = 0.0;
+    mesh.checkPoints.clear();
+    for (const std::array<int, 3>& t : domain->triangles())
+    {
+      std::array<int, 3> key = t;
+      std::sort(key.begin(), key.end());
+      if (const auto known = accepted.find(key); known != accepted.end())
+      {
+        mesh.maxDeviation = std::max(mesh.maxDeviation, known->second.first);
+        mesh.checkPoints.push_back(known->second.second);
+        continue;
+      }
+      const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+      const Vec2 w = (a.domain + b.domain + c.domain) / 3.0;
+      const Vec3 linear = (a.x + b.x + c.x) / 3.0;
+      const double linearRadius = (a.r + b.r + c.r) / 3.0;
+      CapBall s;
+      if (!solve(w, linearRadius, s))
+        fail("3D MAT sheets: ", where(), ": no ball touches the cap and the canal face over ",
+          format(B.userPoint(linear)));
+      // Empty of the whole boundary (the canal face and the cap touch it by construction):
+      // anything nearer is a part of the MAT this sheet does not model.
+      if (Options.exact->distance(s.x) < s.r * (1.0 - 1e-7) - 1e-12 * Size)
+        fail("3D MAT sheets: ", where(), ": its ball at ", format(B.userPoint(s.x)),
+          " reaches another face (a seam crosses the cap's sheet: not supported yet)");
+      const double deviation = std::max((s.x - linear).norm(), std::abs(s.r - linearRadius));
+      const double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
+      SheetVertex v;
+      v.x = s.x;
+      v.r = s.r;
+      v.q = { { w, G[s.face].parameterOf(s.foot) } };
+      v.touch = { { s.touch, s.foot } };
+      v.domain = w;
+      if (deviation <= tolerance && edge <= longest)
+      {
+        mesh.maxDeviation = std::max(mesh.maxDeviation, deviation / Size);
+        mesh.checkPoints.push_back(v);
+        accepted[key] = { deviation / Size, v };
+        continue;
+      }
+      const int index = domain->insert(w);
+      if (index < 0)
+        continue;
+      if (index != static_cast<int>(mesh.vertices.size()))
+        fail("3D MAT sheets: ", where(), ": the triangulation numbered a new point out of order");
+      if (static_cast<int>(mesh.vertices.size()) >= Options.maxVertices)
+        fail("3D MAT sheets: ", where(), " needs more than ", Options.maxVertices, " vertices");
+      mesh.vertices.push_back(v);
+      balls.push_back(s);
+      ++inserted;
+    }
+    if (inserted == 0)
+      break;
+  }
+  mesh.triangles = domain->triangles();
+  mesh.members = { { CapSide, Canal } };
+  mesh.generators = { { CapSide.front(), Canal.front() } };
+  mesh.parameterisedBy = 0;
+  return mesh;
+}
+
+} // namespace
+
+std::vector<CapEnd> capEnds(const MAT3D& mat)
+{
+  std::vector<CapEnd> out;
+  for (const MAT3DCentreCurve& curve : mat.centreCurves)
+    for (int n : { curve.startNode, curve.endNode })
+    {
+      const MAT3DNode& node = mat.nodes[n];
+      if (!node.circleEnd || node.loopPoint || node.ball.touches.size() != 2)
+        continue;
+      if (std::any_of(out.begin(), out.end(), [n](const CapEnd& e) { return e.id == n; }))
+        continue;
+      out.push_back({ node.ball.x, node.ball.r, node.ball.touches[0], node.ball.touches[1], n });
+    }
+  return out;
+}
+
+std::vector<CapEnd> capEnds(const MedialComplex& mat)
+{
+  std::vector<CapEnd> out;
+  for (const MedialElement& e : mat.elements)
+  {
+    if (e.type != MedialElementType::CentreCurve || e.points.size() < 2 || e.points.front() == e.points.back())
+      continue;
+    for (int id : { e.points.front(), e.points.back() })
+    {
+      const MedialPoint3D& p = mat.points[id];
+      if (p.type != MedialPoint3DType::CircleCentre || p.touches.size() != 2 ||
+        std::any_of(out.begin(), out.end(), [id](const CapEnd& c) { return c.id == id; }))
+        continue;
+      out.push_back({ p.x, p.radius, p.touches[0], p.touches[1], id });
+    }
+  }
+  return out;
+}
+
+void dropCapGroups(std::vector<SheetGroup>& groups, const std::vector<MedialSheetMesh>& capSheets)
+{
+  auto within = [](const std::vector<int>& side, const std::vector<int>& members) {
+    return std::all_of(side.begin(), side.end(),
+      [&](int g) { return std::find(members.begin(), members.end(), g) != members.end(); });
+  };
+  groups.erase(std::remove_if(groups.begin(), groups.end(),
+                 [&](const SheetGroup& g) {
+                   return g.traced.empty() &&
+                     std::any_of(capSheets.begin(), capSheets.end(), [&](const MedialSheetMesh& m) {
+                       return !m.triangles.empty() &&
+                         ((within(g.a, m.members[0]) && within(g.b, m.members[1])) ||
+                           (within(g.b, m.members[0]) && within(g.a, m.members[1])));
+                     });
+                 }),
+    groups.end());
+}
+
+MedialSheetMesh interpolateCapSheet(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const CapEnd& end, const SheetOptions& options)
+{
+  return CapSheetBuilder(boundary, generators, end, options).run();
+}
+
+} // namespace exactmat
