@@ -490,7 +490,7 @@ TEST(MAT3D, CylinderAxisAndTorusCoreAreCentreCurvesInClosedForm)
     double r = frame.lengthToUser(ball.r);
     if (moved)
     {
-      x = far.rotation.transpose() * (x - far.offset) / far.scale;
+      x = unplaced(far, x);
       r /= far.scale;
     }
     return std::make_pair(x, r);

@@ -298,7 +298,7 @@ TEST(Sheets, CylinderConesAreTheClosedFormAndTheAxisCoversTheSide)
           double r = frame.lengthToUser(v.r);
           if (moved)
           {
-            x = far.rotation.transpose() * (x - far.offset) / far.scale;
+            x = unplaced(far, x);
             r /= far.scale;
           }
           const double rho = std::hypot(x.x(), x.y());

@@ -17,7 +17,7 @@
 /// (bisected: the ball touching the circle and another entity, a cone sheet's apex), its
 /// touch reaches a sharp edge, the face stops being a canal surface, or the curve closes.
 
-#include "mat3d/Generator3D.h"
+#include "mat3d/FaceCurveSearch.h"
 
 #include <functional>
 #include <string>
@@ -47,23 +47,13 @@ struct CentreCurve
   bool frontBlocked = false, backBlocked = false;
 };
 
-struct CentreCurveSearch
+struct CentreCurveSearch : FaceCurveSearch
 {
-  const Boundary3D* boundary = nullptr;
-  const std::vector<Generator3D>* generators = nullptr; ///< faces first (generator f = face f)
   /// A face that enters the ball (centre, radius), or −1 when it is empty of the whole
   /// boundary; it touches a circle of a face, so the test is meant against a ball smaller
   /// by a relative 1e-6. Where a face enters, the end is put where its distance equals the
   /// radius.
   std::function<int(const Vec3&, double)> entering;
-  /// The face across side `side` of face `face` when the edge there is smooth, else −1.
-  std::function<int(int, int)> smoothNeighbour;
-  double size = 1.0;       ///< the solid's diagonal
-  double tolerance = 1e-4; ///< chord deviation of the centre polyline, fraction of the size
-  double maxStep = 0.05;   ///< longest step of the centre, fraction of the size
-  int maxSteps = 200000;   ///< per curve (a runaway is an error)
-  /// Positions in error messages are mapped through this (to the user's frame) when set.
-  std::function<Vec3(const Vec3&)> toUser;
 };
 
 /// Whether the touch at q of a curved face lies on a circle of contact (see the file

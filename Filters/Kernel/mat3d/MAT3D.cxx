@@ -107,6 +107,7 @@ private:
   void startFrom(int node);
   void addRims();
   void addCentreCurves();
+  void prepare(FaceCurveSearch& search) const;
   bool emptyOfAll(const Vec3& x, double r) const { return enteringFace(x, r) < 0; }
   int enteringFace(const Vec3& x, double r) const;
   int smoothNeighbour(int face, int side) const;
@@ -1928,18 +1929,24 @@ int Tracer::smoothNeighbour(int face, int side) const
 // ball touching a whole circle, and — where the curve stopped because the ball reached
 // another entity — that entity too (a cylinder's cap at the apex of its cone sheet). A
 // closed curve (a torus' core) starts and ends at a loop point.
-void Tracer::addCentreCurves()
+// The boundary, the scale and the step controls, for the rim and centre curve searches.
+void Tracer::prepare(FaceCurveSearch& search) const
 {
-  CentreCurveSearch search;
   search.boundary = &B;
   search.generators = &Generators;
   search.size = Size;
   search.tolerance = Options.tolerance;
   search.maxStep = Options.maxStep;
   search.maxSteps = Options.maxStepsPerSeam;
-  search.entering = [this](const Vec3& x, double r) { return enteringFace(x, r); };
   search.smoothNeighbour = [this](int face, int side) { return smoothNeighbour(face, side); };
   search.toUser = [this](const Vec3& x) { return B.userPoint(x); };
+}
+
+void Tracer::addCentreCurves()
+{
+  CentreCurveSearch search;
+  prepare(search);
+  search.entering = [this](const Vec3& x, double r) { return enteringFace(x, r); };
   const double onFace = 1e-7 * Size;
   for (const CentreCurve& curve : traceCentreCurves(search))
   {
@@ -2004,15 +2011,8 @@ void Tracer::addCentreCurves()
 void Tracer::addRims()
 {
   RimSearch search;
-  search.boundary = &B;
-  search.generators = &Generators;
-  search.size = Size;
-  search.tolerance = Options.tolerance;
-  search.maxStep = Options.maxStep;
-  search.maxSteps = Options.maxStepsPerSeam;
+  prepare(search);
   search.empty = [this](const Vec3& x, double r) { return emptyOfAll(x, r); };
-  search.smoothNeighbour = [this](int face, int side) { return smoothNeighbour(face, side); };
-  search.toUser = [this](const Vec3& x) { return B.userPoint(x); };
   for (const Rim& rim : traceRims(search))
   {
     const RimBall& start = rim.balls.front();
@@ -2317,66 +2317,37 @@ MedialComplex MAT3D::complex() const
       c.elements.push_back(e);
     }
   }
+  // A polyline element from node to node through its inner balls' points.
+  auto addCurve = [&c](MedialElementType type, std::vector<int> governors, int startNode, int endNode,
+                    const std::vector<MedialBall3D>& balls, MedialPoint3DType pointType, int contacts) {
+    MedialElement e;
+    e.type = type;
+    e.governors = std::move(governors);
+    e.points.push_back(startNode);
+    for (size_t i = 1; i + 1 < balls.size(); ++i)
+    {
+      MedialPoint3D p;
+      p.x = balls[i].x;
+      p.radius = balls[i].r;
+      p.type = pointType;
+      p.contacts = contacts;
+      p.touches = balls[i].touches;
+      c.points.push_back(p);
+      e.points.push_back(static_cast<int>(c.points.size()) - 1);
+    }
+    e.points.push_back(endNode);
+    c.elements.push_back(e);
+  };
   for (const MAT3DSeam& s : seams)
-  {
-    MedialElement e;
-    e.type = MedialElementType::Seam;
-    e.governors = { s.faces[0], s.faces[1], s.faces[2] };
-    e.points.push_back(s.startNode);
-    for (size_t i = 1; i + 1 < s.balls.size(); ++i)
-    {
-      MedialPoint3D p;
-      p.x = s.balls[i].x;
-      p.radius = s.balls[i].r;
-      p.type = MedialPoint3DType::Seam;
-      p.contacts = s.touchpoints;
-      p.touches = s.balls[i].touches;
-      c.points.push_back(p);
-      e.points.push_back(static_cast<int>(c.points.size()) - 1);
-    }
-    e.points.push_back(s.endNode);
-    c.elements.push_back(e);
-  }
+    addCurve(MedialElementType::Seam, { s.faces[0], s.faces[1], s.faces[2] }, s.startNode, s.endNode, s.balls,
+      MedialPoint3DType::Seam, s.touchpoints);
   for (const MAT3DSkeletalEdge& rim : skeletalEdges)
-  {
-    MedialElement e;
-    e.type = MedialElementType::SkeletalEdge;
-    e.governors = { rim.generators[0], rim.generators[1] };
-    e.points.push_back(rim.startNode);
-    for (size_t i = 1; i + 1 < rim.balls.size(); ++i)
-    {
-      MedialPoint3D p;
-      p.x = rim.balls[i].x;
-      p.radius = rim.balls[i].r;
-      p.type = MedialPoint3DType::SkeletalEdge;
-      p.contacts = 1;
-      p.touches = rim.balls[i].touches;
-      c.points.push_back(p);
-      e.points.push_back(static_cast<int>(c.points.size()) - 1);
-    }
-    e.points.push_back(rim.endNode);
-    c.elements.push_back(e);
-  }
+    addCurve(MedialElementType::SkeletalEdge, { rim.generators[0], rim.generators[1] }, rim.startNode, rim.endNode,
+      rim.balls, MedialPoint3DType::SkeletalEdge, 1);
+  // (A ball touching a whole circle has no count of touchpoints: its distance is checked.)
   for (const MAT3DCentreCurve& curve : centreCurves)
-  {
-    MedialElement e;
-    e.type = MedialElementType::CentreCurve;
-    e.governors = curve.faces;
-    e.points.push_back(curve.startNode);
-    for (size_t i = 1; i + 1 < curve.balls.size(); ++i)
-    {
-      MedialPoint3D p;
-      p.x = curve.balls[i].x;
-      p.radius = curve.balls[i].r;
-      p.type = MedialPoint3DType::CircleCentre;
-      p.contacts = 0;
-      p.touches = curve.balls[i].touches;
-      c.points.push_back(p);
-      e.points.push_back(static_cast<int>(c.points.size()) - 1);
-    }
-    e.points.push_back(curve.endNode);
-    c.elements.push_back(e);
-  }
+    addCurve(MedialElementType::CentreCurve, curve.faces, curve.startNode, curve.endNode, curve.balls,
+      MedialPoint3DType::CircleCentre, 0);
   return c;
 }
 

@@ -16,7 +16,7 @@
 /// rounding; the centre and the radius move only to second order with the ridge's place
 /// (κ1 is stationary across a ridge).
 
-#include "mat3d/Generator3D.h"
+#include "mat3d/FaceCurveSearch.h"
 
 #include <functional>
 #include <vector>
@@ -59,21 +59,11 @@ struct Rim
   std::string end;
 };
 
-struct RimSearch
+struct RimSearch : FaceCurveSearch
 {
-  const Boundary3D* boundary = nullptr;
-  const std::vector<Generator3D>* generators = nullptr; ///< faces first (generator f = face f)
   /// Whether the ball (centre, radius) is empty of the whole boundary; it osculates one face
   /// at its touch, so the test is meant against a ball smaller by a relative 1e-6.
   std::function<bool(const Vec3&, double)> empty;
-  /// The face across side `side` of face `face` when the edge there is smooth, else −1.
-  std::function<int(int, int)> smoothNeighbour;
-  double size = 1.0;       ///< the solid's diagonal
-  double tolerance = 1e-4; ///< chord deviation of the centre polyline, fraction of the size
-  double maxStep = 0.05;   ///< longest step of the centre, fraction of the size
-  int maxSteps = 200000;   ///< per rim (a runaway is an error)
-  /// Positions in error messages are mapped through this (to the user's frame) when set.
-  std::function<Vec3(const Vec3&)> toUser;
 };
 
 /// Every rim of the solid's curved faces: ridge points found where the ridge function

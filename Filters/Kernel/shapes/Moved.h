@@ -31,6 +31,12 @@ struct Placement
 /// weights × 1e20 — the swept solids' invariance tests' placement.
 Placement farFromTheOrigin();
 
+/// Where a point of the placed solid was before (the inverse map; lengths: divide by scale).
+inline Vec3 unplaced(const Placement& placed, const Vec3& x)
+{
+  return placed.rotation.transpose() * (x - placed.offset) / placed.scale;
+}
+
 inline std::vector<PatchPiece> movedPieces(std::vector<PatchPiece> pieces, const Placement& placed)
 {
   return movedPieces(std::move(pieces), placed.rotation, placed.scale, placed.offset, placed.weightFactor);

@@ -4,6 +4,7 @@
 #include "common/InputError.h"
 #include "geometry/ClosestPoint.h"
 #include "geometry/DomainTriangulation.h"
+#include "sheets/CentroidRefinement.h"
 #include "mat3d/CentreCurve.h"
 #include "mat3d/PatchBoundary.h"
 
@@ -260,7 +261,6 @@ MedialSheetMesh CapSheetBuilder::run()
     fail("3D MAT sheets: ", where(), ": the cap's border cannot be triangulated (", e.what(), ")");
   }
   MedialSheetMesh mesh;
-  std::vector<CapBall> balls;
   for (size_t k = 0; k < loop.size(); ++k)
   {
     SheetVertex v;
@@ -271,10 +271,6 @@ MedialSheetMesh CapSheetBuilder::run()
     v.domain = loop[k];
     v.border = v.convexEdge = true;
     mesh.vertices.push_back(v);
-    CapBall b;
-    b.w = loop[k];
-    b.x = b.touch = b.foot = BorderPoints[k];
-    balls.push_back(b);
   }
   mesh.loops = 1;
   mesh.loopSizes = { static_cast<int>(loop.size()) };
@@ -293,14 +289,6 @@ MedialSheetMesh CapSheetBuilder::run()
     v.border = true; // (where the sheet meets the centre curve: its ball touches a circle)
     mesh.apex = static_cast<int>(mesh.vertices.size());
     mesh.vertices.push_back(v);
-    CapBall b;
-    b.w = apex;
-    b.x = End.centre;
-    b.r = End.radius;
-    b.touch = End.capTouch;
-    b.foot = End.circleTouch;
-    b.face = circleFace;
-    balls.push_back(b);
   }
   Vec3 middle = Vec3::Zero();
   for (const Vec3& p : circle)
@@ -309,68 +297,26 @@ MedialSheetMesh CapSheetBuilder::run()
   mesh.apexCircleCentre = middle;
   mesh.apexCircleAxis = (circle[16] - circle[0]).cross(circle[32] - circle[0]).normalized();
   mesh.apexCircleRadius = (circle[0] - middle).norm();
-  const double tolerance = Options.tolerance * Size, longest = Options.maxEdge * Size;
-  std::map<std::array<int, 3>, std::pair<double, SheetVertex>> accepted;
-  for (int round = 0;; ++round)
-  {
-    if (round > 200)
-      fail("3D MAT sheets: ", where(), " is not refined within 200 rounds");
-    int inserted = 0;
-    mesh.maxDeviation = 0.0;
-    mesh.checkPoints.clear();
-    for (const std::array<int, 3>& t : domain->triangles())
-    {
-      std::array<int, 3> key = t;
-      std::sort(key.begin(), key.end());
-      if (const auto known = accepted.find(key); known != accepted.end())
-      {
-        mesh.maxDeviation = std::max(mesh.maxDeviation, known->second.first);
-        mesh.checkPoints.push_back(known->second.second);
-        continue;
-      }
-      const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-      const Vec2 w = (a.domain + b.domain + c.domain) / 3.0;
-      const Vec3 linear = (a.x + b.x + c.x) / 3.0;
-      const double linearRadius = (a.r + b.r + c.r) / 3.0;
-      CapBall s;
-      if (!solve(w, linearRadius, s))
-        fail("3D MAT sheets: ", where(), ": no ball touches the cap and the canal face over ",
-          format(B.userPoint(linear)));
-      // Empty of the whole boundary (the canal face and the cap touch it by construction):
-      // anything nearer is a part of the MAT this sheet does not model.
-      if (Options.exact->distance(s.x) < s.r * (1.0 - 1e-7) - 1e-12 * Size)
-        fail("3D MAT sheets: ", where(), ": its ball at ", format(B.userPoint(s.x)),
-          " reaches another face (a seam crosses the cap's sheet: not supported yet)");
-      const double deviation = std::max((s.x - linear).norm(), std::abs(s.r - linearRadius));
-      const double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
-      SheetVertex v;
-      v.x = s.x;
-      v.r = s.r;
-      v.q = { { w, G[s.face].parameterOf(s.foot) } };
-      v.touch = { { s.touch, s.foot } };
-      v.domain = w;
-      if (deviation <= tolerance && edge <= longest)
-      {
-        mesh.maxDeviation = std::max(mesh.maxDeviation, deviation / Size);
-        mesh.checkPoints.push_back(v);
-        accepted[key] = { deviation / Size, v };
-        continue;
-      }
-      const int index = domain->insert(w);
-      if (index < 0)
-        continue;
-      if (index != static_cast<int>(mesh.vertices.size()))
-        fail("3D MAT sheets: ", where(), ": the triangulation numbered a new point out of order");
-      if (static_cast<int>(mesh.vertices.size()) >= Options.maxVertices)
-        fail("3D MAT sheets: ", where(), " needs more than ", Options.maxVertices, " vertices");
-      mesh.vertices.push_back(v);
-      balls.push_back(s);
-      ++inserted;
-    }
-    if (inserted == 0)
-      break;
-  }
-  mesh.triangles = domain->triangles();
+  auto ball = [&](const Vec2& w, const std::array<int, 3>& t) {
+    const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const Vec3 linear = (a.x + b.x + c.x) / 3.0;
+    CapBall s;
+    if (!solve(w, (a.r + b.r + c.r) / 3.0, s))
+      fail("3D MAT sheets: ", where(), ": no ball touches the cap and the canal face over ",
+        format(B.userPoint(linear)));
+    // Empty of the whole boundary (the canal face and the cap touch it by construction):
+    // anything nearer is a part of the MAT this sheet does not model.
+    if (Options.exact->distance(s.x) < s.r * (1.0 - 1e-7) - 1e-12 * Size)
+      fail("3D MAT sheets: ", where(), ": its ball at ", format(B.userPoint(s.x)),
+        " reaches another face (a seam crosses the cap's sheet: not supported yet)");
+    SheetVertex v;
+    v.x = s.x;
+    v.r = s.r;
+    v.q = { { w, G[s.face].parameterOf(s.foot) } };
+    v.touch = { { s.touch, s.foot } };
+    return v;
+  };
+  refineByCentroids(*domain, mesh, Options, Size, ball, []() {}, where());
   mesh.members = { { CapSide, Canal } };
   mesh.generators = { { CapSide.front(), Canal.front() } };
   mesh.parameterisedBy = 0;

@@ -3,6 +3,7 @@
 #include "common/Format.h"
 #include "common/InputError.h"
 #include "geometry/DomainTriangulation.h"
+#include "sheets/CentroidRefinement.h"
 #include "mat3d/PatchBoundary.h"
 
 #include <Eigen/Dense>
@@ -302,71 +303,26 @@ MedialSheetMesh RimSheetBuilder::run()
       }
     return best;
   };
-  const double tolerance = Options.tolerance * Size, longest = Options.maxEdge * Size;
-  // Triangles already found within the tolerance (by their vertices): their deviation and
-  // the exact ball at their centroid.
-  std::map<std::array<int, 3>, std::pair<double, SheetVertex>> accepted;
-  for (int round = 0;; ++round)
-  {
-    if (round > 200)
-      fail("3D MAT sheets: ", where(), " is not refined within 200 rounds");
-    int inserted = 0;
-    mesh.maxDeviation = 0.0;
-    mesh.checkPoints.clear();
-    for (const std::array<int, 3>& t : domain->triangles())
-    {
-      std::array<int, 3> key = t;
-      std::sort(key.begin(), key.end());
-      if (const auto known = accepted.find(key); known != accepted.end())
-      {
-        mesh.maxDeviation = std::max(mesh.maxDeviation, known->second.first);
-        mesh.checkPoints.push_back(known->second.second);
-        continue;
-      }
-      const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-      const Vec2 w = (a.domain + b.domain + c.domain) / 3.0;
-      const Vec3 linear = (a.x + b.x + c.x) / 3.0;
-      const double linearRadius = (a.r + b.r + c.r) / 3.0;
-      SheetBall s;
-      if (!solve(w, nearestSolved(w), (linear - Origin).dot(Normal), reach, s))
-        fail("3D MAT sheets: ", where(), ": no ball touches the solid on both sides of it over ",
-          format(B.userPoint(linear)));
-      const double deviation = std::max((s.x - linear).norm(), std::abs(s.r - linearRadius));
-      const double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
-      if (deviation <= tolerance && edge <= longest)
-      {
-        mesh.maxDeviation = std::max(mesh.maxDeviation, deviation / Size);
-        SheetVertex check;
-        check.x = s.x;
-        check.r = s.r;
-        check.touch = { { s.ta, s.tb } };
-        check.domain = w;
-        mesh.checkPoints.push_back(check);
-        accepted[key] = { deviation / Size, check };
-        continue;
-      }
-      const int index = domain->insert(w);
-      if (index < 0)
-        continue;
-      if (index != static_cast<int>(mesh.vertices.size()))
-        fail("3D MAT sheets: ", where(), ": the triangulation numbered a new point out of order");
-      if (static_cast<int>(mesh.vertices.size()) >= Options.maxVertices)
-        fail("3D MAT sheets: ", where(), " needs more than ", Options.maxVertices, " vertices");
-      SheetVertex v;
-      v.x = s.x;
-      v.r = s.r;
-      v.q = { { s.qa, s.qb } };
-      v.touch = { { s.ta, s.tb } };
-      v.domain = w;
-      mesh.vertices.push_back(v);
-      balls.push_back(s);
+  SheetBall last; // the ball of the vertex just solved (kept when it is added)
+  auto ball = [&](const Vec2& w, const std::array<int, 3>& t) {
+    const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const Vec3 linear = (a.x + b.x + c.x) / 3.0;
+    if (!solve(w, nearestSolved(w), (linear - Origin).dot(Normal), reach, last))
+      fail("3D MAT sheets: ", where(), ": no ball touches the solid on both sides of it over ",
+        format(B.userPoint(linear)));
+    SheetVertex v;
+    v.x = last.x;
+    v.r = last.r;
+    v.q = { { last.qa, last.qb } };
+    v.touch = { { last.ta, last.tb } };
+    return v;
+  };
+  refineByCentroids(*domain, mesh, Options, Size, ball,
+    [&]() {
+      balls.push_back(last);
       solved.push_back(true);
-      ++inserted;
-    }
-    if (inserted == 0)
-      break;
-  }
-  mesh.triangles = domain->triangles();
+    },
+    where());
   // The pair: the faces touched on either side (every face, for the ellipsoid); the
   // coverage check counts both sides' footprints on their union.
   std::set<int> faces;
