@@ -62,9 +62,21 @@ bool onCircleOfContact(const Generator3D& face, const Vec2& q, double size, Vec3
 
 Vec3List contactCircle(const Generator3D& face, const Vec2& q, const Vec3& centre, int samples)
 {
+  // The circle lies on the ball's sphere in the plane normal to the centre curve (a small
+  // circle of the sphere where the normal is not square to the curve: a cone, a spheroid).
+  // The curve's tangent: the centres a 1e-4 of the radius either way across the circles.
   const Touch3D t = face.evaluate(q);
   const Vec3 touch = t.point;
-  const Vec3 tangent = (touch - centre).cross(t.dPoint * faceCurvature(t).d1).normalized();
+  const FaceCurvature c = faceCurvature(t);
+  const Eigen::Matrix2d metric = t.dPoint.transpose() * t.dPoint;
+  Vec2 d2 = metric.ldlt().solve(t.dPoint.transpose() * t.normal.cross(t.dPoint * c.d1));
+  d2 /= (t.dPoint * d2).norm();
+  const double h = 1e-4 * (touch - centre).norm();
+  Vec3 ahead, behind;
+  double r;
+  Vec3 tangent = Vec3::Constant(NAN);
+  if (focalBall(face, q + h * d2, ahead, r) && focalBall(face, q - h * d2, behind, r))
+    tangent = (ahead - behind).normalized();
   const Vec3 middle = centre + tangent * tangent.dot(touch - centre);
   const Vec3 a = touch - middle;
   const Vec3 b = tangent.cross(a);
@@ -243,12 +255,17 @@ CentreTracer::Half CentreTracer::traceFrom(const CircleBall& start, Vec3 heading
     std::fprintf(stderr, "face %d q (%g %g) s %g next (%g %g) ahead %d middle %d\n", f, q.x(), q.y(), s, next.x(), next.y(),
       ball(f, next, ahead), ball(f, q + 0.5 * s * d, middle));
 #endif
+    // Chord control on the centres and on the touches too: along a straight axis any step
+    // passes the first, while the circles' band between two balls bends with the face (a
+    // spheroid's meridian), which the coverage sums as a chord.
+    auto withinChord = [chord](const Vec3& a, const Vec3& m, const Vec3& b) {
+      const Vec3 e = b - a;
+      const double t = std::clamp((m - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
+      return (a + t * e - m).norm() <= chord;
+    };
     if (ok)
-    {
-      const Vec3 e = ahead.x - here.x;
-      const double t = std::clamp((middle.x - here.x).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
-      ok = (here.x + t * e - middle.x).norm() <= chord && e.norm() <= longest && std::abs(ahead.r - here.r) <= longest;
-    }
+      ok = withinChord(here.x, middle.x, ahead.x) && withinChord(here.touch, middle.touch, ahead.touch) &&
+        (ahead.x - here.x).norm() <= longest && std::abs(ahead.r - here.r) <= longest;
     if (!ok)
     {
       s *= 0.5;

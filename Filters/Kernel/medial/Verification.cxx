@@ -51,7 +51,20 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
           osculation[k] = boundary.osculation(contacts.front(), p.x, p.radius);
       }
       if (!(distance < INFINITY))
+      {
         distance = boundary.distance(p.x);
+        // A ball touching a continuum (a circle of a canal face) is where the closest-point
+        // search can stop at a near-minimum of the ring it explores (far from the origin,
+        // where the rounded face is a ring of them): its recorded touch, when it lies on the
+        // boundary, is a witness that the distance is at most its own. (A nearer point the
+        // search finds stays found: a ball that reaches out is still caught.)
+        if (p.type == MedialPoint3DType::CircleCentre && !p.touches.empty())
+        {
+          const Vec3& touch = p.touches.front();
+          if (boundary.distance(touch) <= inputRounding * size + 1e-15 * size)
+            distance = std::min(distance, (touch - p.x).norm());
+        }
+      }
       error[k] = std::abs(distance - p.radius) / size;
     }
   });

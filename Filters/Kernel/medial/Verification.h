@@ -61,7 +61,10 @@ struct MedialVerification
 /// plus what the input is known to (a part far from the origin: its coordinates' rounding,
 /// Normalisation::inputRounding, against which a tiny ball's touchpoints cannot be told).
 /// A skeletal edge point touching a curved face inside (or across a smooth edge) is also
-/// checked to osculate it: radius·κ1 = 1 (SolidBoundary::osculation).
+/// checked to osculate it: radius·κ1 = 1 (SolidBoundary::osculation). A centre of a ball
+/// touching a whole circle is checked by distance; its recorded touch, when on the
+/// boundary, bounds that distance from above (the search over a ring of minima may stop
+/// at a near-minimum).
 /// `parallel` runs the per-point queries; the figures are the same whichever runner is given.
 MedialVerification verifyMedialComplex(
   const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1,

@@ -3,6 +3,7 @@
 #include "geometry/ClosestPoint.h"
 #include "mat3d/CentreCurve.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace exactmat
@@ -93,12 +94,11 @@ std::vector<double> centreCurveFootprints(const Boundary3D& boundary, const std:
     std::vector<std::vector<int>> facesOn;
     for (size_t i = 0; i < n; ++i)
     {
+      // (A ball whose touch is on no curved face, or whose circle is a point — an end
+      // osculating a pole — adds no band of its own: the band runs to the next circle.)
       const int f = faceAt(curve.touches[i], on);
       if (f < 0)
-      {
-        circles.clear();
-        break;
-      }
+        continue;
       const Vec3List four = contactCircle(generators[f], generators[f].parameterOf(curve.touches[i]), curve.centres[i], 4);
       Circle c;
       c.centre = 0.25 * (four[0] + four[1] + four[2] + four[3]);
@@ -111,11 +111,8 @@ std::vector<double> centreCurveFootprints(const Boundary3D& boundary, const std:
       c.radius = (curve.touches[i] - c.centre).norm();
       c.u = (curve.touches[i] - c.centre) / c.radius;
       c.w = c.axis.cross(c.u);
-      if (!c.u.allFinite() || !c.axis.allFinite())
-      {
-        circles.clear();
-        break;
-      }
+      if (!(c.radius > on) || !c.u.allFinite() || !c.axis.allFinite())
+        continue;
       std::vector<int> at(2 * m); // at every half step of the angle
       for (int k = 0; k < 2 * m; ++k)
         at[k] = faceAt(c.at(0.5 * k * turn), on);
@@ -127,21 +124,28 @@ std::vector<double> centreCurveFootprints(const Boundary3D& boundary, const std:
       const Circle &a = circles[i], &b = circles[i + 1];
       for (int k = 0; k < m; ++k)
       {
-        // The strip from angle k to k + 1, cut where circle i crosses from one face to the
-        // next (by bisection on the angle): each piece's area from its own middle (the area
-        // element changes with the angle: a torus' outer half is wider than its inner).
+        // The strip from angle k to k + 1, cut where either circle crosses from one face to
+        // the next (by bisection on the angle): each piece's area from its own middle (the
+        // area element changes with the angle: a torus' outer half is wider than its inner).
+        // A border crossing the strip aslant runs from one cut to the other: the piece
+        // between them is split along at its middle, which halves it as the border does.
         std::vector<double> cuts{ k * turn, (k + 1) * turn };
-        const int f0 = facesOn[i][2 * k], f1 = facesOn[i][(2 * k + 2) % (2 * m)];
-        if (f0 != f1)
+        for (size_t side = 0; side < 2; ++side)
         {
+          const Circle& circle = side == 0 ? a : b;
+          const std::vector<int>& at = facesOn[i + side];
+          const int f0 = at[2 * k], f1 = at[(2 * k + 2) % (2 * m)];
+          if (f0 == f1)
+            continue;
           double lo = k * turn, hi = (k + 1) * turn;
           for (int it = 0; it < 30; ++it)
           {
             const double mid = 0.5 * (lo + hi);
-            (faceAt(a.at(mid), on) == f0 ? lo : hi) = mid;
+            (faceAt(circle.at(mid), on) == f0 ? lo : hi) = mid;
           }
-          cuts.insert(cuts.begin() + 1, 0.5 * (lo + hi));
+          cuts.push_back(0.5 * (lo + hi));
         }
+        std::sort(cuts.begin(), cuts.end());
         for (size_t c = 0; c + 1 < cuts.size(); ++c)
         {
           const double middle = 0.5 * (cuts[c] + cuts[c + 1]);
