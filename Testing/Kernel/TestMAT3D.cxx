@@ -499,7 +499,10 @@ TEST(MAT3D, CylinderAxisAndTorusCoreAreCentreCurvesInClosedForm)
   // costs the global distance search milliseconds — the circle is a continuum of minima —
   // and far from the origin, where the rounded input makes it a ring of near-minima, half
   // a second).
-  auto verified = [](const Traced& t, const std::string& what, int stride) {
+  // (Next to a spheroid's osculating ends the distance is flat to fourth order and its
+  // search takes tens of seconds a point: there only the middle three fifths are verified,
+  // the ends being held to the closed form.)
+  auto verified = [](const Traced& t, const std::string& what, int stride, bool ends = true) {
     const Normalisation& frame = t.boundary->userFrame();
     const PatchBoundary boundary(*t.boundary);
     MedialComplex c = t.mat.complex();
@@ -509,9 +512,13 @@ TEST(MAT3D, CylinderAxisAndTorusCoreAreCentreCurvesInClosedForm)
     for (const MedialPoint3D& p : c.points)
       EXPECT_EQ(p.type, MedialPoint3DType::CircleCentre) << what;
     MedialComplex chosen;
+    const size_t nodes = t.mat.nodes.size(), inner = c.points.size() - nodes;
     for (size_t i = 0; i < c.points.size(); ++i)
-      if (i % stride == 0 || i < t.mat.nodes.size())
+    {
+      const bool middle = i >= nodes && 5 * (i - nodes) >= inner && 5 * (i - nodes) <= 4 * inner;
+      if (i < nodes ? ends : (i - nodes) % stride == 0 && (ends || middle))
         chosen.points.push_back(c.points[i]);
+    }
     const MedialVerification v =
       verifyMedialComplex(boundary, chosen, 1, std::max(1e-15, 64.0 * frame.inputRounding()));
     EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what;
@@ -608,7 +615,7 @@ TEST(MAT3D, CylinderAxisAndTorusCoreAreCentreCurvesInClosedForm)
       // last piece of the segment.)
       for (int n : { axis.startNode, axis.endNode })
         EXPECT_NEAR(std::abs(back(moved, frame, t.mat.nodes[n].ball).first.x()), 1.5, moved ? 5e-3 : 1e-3) << what;
-      verified(t, what, moved ? 16 : 4);
+      verified(t, what, moved ? 16 : 4, false);
     }
   }
 }
