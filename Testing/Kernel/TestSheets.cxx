@@ -286,7 +286,9 @@ TEST(Sheets, CylinderConesAreTheClosedFormAndTheAxisCoversTheSide)
       const std::string what = "cylinder of length " + std::to_string(length) + (moved ? ", moved" : "");
       const Sheets s = sheetsOf(pieces);
       ASSERT_EQ(s.meshes.size(), 2u) << what;
-      expectExactSheets(s, what, 1e-4);
+      // (Every fifth vertex against the exact boundary: the cones have 5000; all of them
+      // are held to the closed form below.)
+      expectExactSheets(s, what, 1e-4, 5);
       const Normalisation& frame = s.boundary->userFrame();
       double worst = 0.0;
       for (const MedialSheetMesh& mesh : s.meshes)
