@@ -565,8 +565,15 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     for (const std::vector<int>* side : { &group.a, &group.b })
     {
       out += side == &group.b ? "," : "";
-      for (size_t i = 0; i < side->size(); ++i)
-        out += (i == 0 ? "" : "+") + generatorLabel(boundary, generators[(*side)[i]].faces());
+      // (The pieces of one entity — a plate's face tiled into 66 patches — named once.)
+      std::vector<std::string> named;
+      for (int g : *side)
+        if (const std::string l = generatorLabel(boundary, generators[g].faces());
+            std::find(named.begin(), named.end(), l) == named.end())
+        {
+          out += (named.empty() ? "" : "+") + l;
+          named.push_back(l);
+        }
     }
     return out;
   };

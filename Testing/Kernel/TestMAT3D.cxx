@@ -382,18 +382,59 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
     }
     return std::string("no error");
   };
-  // A cylinder shorter than its diameter: its MAT is a disk bounded by a circular seam
-  // (cones to its caps' edges), which no vertex leads to: not traced yet, and said so.
-  ShapeParameters shortCylinder;
-  shortCylinder.length = 1.5;
-  EXPECT_NE(message(patchPieces(makeShape("cylinder", shortCylinder).surfaces)).find("no seam touches"),
-    std::string::npos);
   // A sphere (every point an umbilic: its MAT is the centre, one ball touching all of it):
   // no rim, no vertex, no circle of contact.
   EXPECT_NE(message(patchPieces(ellipsoidSurfaces(Vec3(1, 1, 1), M_PI / 6, 2)))
               .find("no convex vertex, no rim and no circle of contact"),
     std::string::npos);
 
+}
+
+// A cylinder of radius R shorter than its diameter (length 2h < 2R): its MAT is the disk
+// |ρ| ≤ R − h of its mid-plane (balls touching both caps) bounded by a circular seam of
+// balls of radius h touching both caps and the side, which no vertex leads to — a restart
+// from a face no seam touches finds it. Unmoved and far from the origin (turned, scaled,
+// reweighted): one closed seam, ρ = R − h, z = 0, r = h, every point verified.
+TEST(MAT3D, ShortCylinderIsADiskBoundedByACircularSeam)
+{
+  const Placement far = farFromTheOrigin();
+  for (const double length : { 1.5, 0.4 })
+    for (const bool moved : { false, true })
+    {
+      ShapeParameters p;
+      p.length = length;
+      std::vector<PatchPiece> pieces = patchPieces(makeShape("cylinder", p).surfaces);
+      if (moved)
+        pieces = movedPieces(pieces, far);
+      const std::string what = "cylinder of length " + std::to_string(length) + (moved ? ", moved" : "");
+      const Traced t = trace(pieces);
+      ASSERT_EQ(t.mat.seams.size(), 1u) << what;
+      EXPECT_EQ(t.mat.junctionCount(), 0) << what;
+      const MAT3DSeam& seam = t.mat.seams.front();
+      EXPECT_EQ(seam.startNode, seam.endNode) << what << ": a closed seam";
+      const Normalisation& frame = t.boundary->userFrame();
+      const double h = 0.5 * length, tolerance = (1e-9 + 64.0 * frame.inputRounding()) * p.radius;
+      double worst = 0.0, turned = 0.0;
+      Vec3 previous = Vec3::Zero();
+      for (size_t i = 0; i < seam.balls.size(); ++i)
+      {
+        Vec3 x = frame.toUser(seam.balls[i].x);
+        double r = frame.lengthToUser(seam.balls[i].r);
+        if (moved)
+        {
+          x = unplaced(far, x);
+          r /= far.scale;
+        }
+        worst = std::max({ worst, std::abs(std::hypot(x.x(), x.y()) - (p.radius - h)), std::abs(x.z()),
+          std::abs(r - h) });
+        if (i > 0)
+          turned += std::atan2(previous.x() * x.y() - previous.y() * x.x(), previous.x() * x.x() + previous.y() * x.y());
+        previous = x;
+      }
+      EXPECT_LE(worst, tolerance) << what;
+      EXPECT_NEAR(std::abs(turned), 2.0 * M_PI, 1e-9) << what << ": once round";
+      expectPointsVerified(t, what);
+    }
 }
 
 // The ellipsoid with semi-axes a > b > c (any order of the axes): no seam, one closed rim,

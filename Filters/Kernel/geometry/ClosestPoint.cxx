@@ -740,6 +740,11 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
   return a + c >= -tol && a * c - b * b >= -std::max(tol * tol, 1e-12 * (a * a + b * b + c * c));
 }
 
+// Boxes searched on this thread (patchSearchWork), and the limit of one search
+// (PatchSearchLimit).
+thread_local std::uint64_t Work = 0;
+thread_local int BoxLimit = MaxPatchBoxes;
+
 struct PatchSearch
 {
   const BezierPatch& patch;
@@ -769,6 +774,7 @@ struct PatchSearch
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
+    ++Work;
     if (++boxes > limit || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
     {
       return;
@@ -833,7 +839,7 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
   }
   const PatchPolys pp = patchPolys(patch, query);
   PatchSearch search{ patch, query, maxDistance, pp.zeroU, pp.zeroV, {}, 0,
-    boxBudget ? std::max(1, *boxBudget) : MaxPatchBoxes };
+    boxBudget ? std::max(1, std::min(*boxBudget, BoxLimit)) : BoxLimit };
   const bool flatU = pp.gu.maxAbs() <= pp.zeroU, flatV = pp.gv.maxAbs() <= pp.zeroV;
   if (flatU && flatV)
   {
@@ -1064,6 +1070,7 @@ namespace
 // rounding of the sphere: that counts as not inside.
 bool negativeSomewhere2(const BernsteinPoly2& h, int depthU, int depthV)
 {
+  ++Work;
   const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
   (void)mx;
   if (*mn >= 0.0)
@@ -1103,6 +1110,22 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
   }
   const BernsteinPoly2 h = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - (radius * radius) * (w * w);
   return negativeSomewhere2(h, 0, 0);
+}
+
+std::uint64_t patchSearchWork()
+{
+  return Work;
+}
+
+PatchSearchLimit::PatchSearchLimit(int boxes)
+  : Previous(BoxLimit)
+{
+  BoxLimit = std::max(1, std::min(boxes, BoxLimit));
+}
+
+PatchSearchLimit::~PatchSearchLimit()
+{
+  BoxLimit = Previous;
 }
 
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)

@@ -14,6 +14,7 @@
 #include "nurbs/BezierCurve.h"
 #include "nurbs/BezierPatch.h"
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -84,5 +85,25 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
 /// Euclidean distance from a point to an axis-aligned box (0 inside): a lower bound for
 /// the distance to anything inside the box.
 double distanceToBox(const Box3& box, const Vec3& p);
+
+/// The boxes the patch searches (closest points, patchComesWithin) of this thread have
+/// examined so far: a deterministic measure of their work, for budgets.
+std::uint64_t patchSearchWork();
+
+/// While it lives, each patch search of this thread examines at most `boxes` boxes (the
+/// default is generous: a curve of degenerate minima is followed far before boxes are
+/// dropped). For speculative work that is undone when it goes wrong, such as the 3D
+/// tracer's restarts.
+class PatchSearchLimit
+{
+public:
+  explicit PatchSearchLimit(int boxes);
+  ~PatchSearchLimit();
+  PatchSearchLimit(const PatchSearchLimit&) = delete;
+  PatchSearchLimit& operator=(const PatchSearchLimit&) = delete;
+
+private:
+  int Previous;
+};
 
 } // namespace exactmat

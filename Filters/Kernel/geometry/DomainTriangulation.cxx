@@ -27,7 +27,8 @@ using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Structure,
 struct DomainTriangulation::Impl
 {
   CDT cdt;
-  int count = 0;
+  int count = 0;  // numbers given (the loops' vertices, then the points inserted)
+  int shared = 0; // loop vertices at a point another loop has already
 };
 
 DomainTriangulation::DomainTriangulation(const std::vector<std::vector<Vec2>>& loops)
@@ -39,12 +40,24 @@ DomainTriangulation::DomainTriangulation(const std::vector<std::vector<Vec2>>& l
     {
       if (loop.size() < 3)
         fail("a loop of ", loop.size(), " vertices");
+      const int first = D->count + 1; // this loop's first number
       std::vector<CDT::Vertex_handle> handles;
       for (const Vec2& p : loop)
       {
-        // A vertex inserted twice keeps its first number: caught by the count below.
+        const size_t before = D->cdt.number_of_vertices();
         CDT::Vertex_handle v = D->cdt.insert(CDT::Point(p.x(), p.y()));
-        v->info() = ++D->count;
+        ++D->count;
+        if (D->cdt.number_of_vertices() == before)
+        {
+          // Two loops may touch at a point (a hole's seam meeting the outer one where it
+          // only kisses it): the vertex keeps its first number. A loop through one point
+          // twice is bad input.
+          if (v->info() >= first)
+            fail("two of its boundary vertices coincide");
+          ++D->shared;
+        }
+        else
+          v->info() = D->count;
         handles.push_back(v);
       }
       for (size_t k = 0; k < handles.size(); ++k)
@@ -55,7 +68,7 @@ DomainTriangulation::DomainTriangulation(const std::vector<std::vector<Vec2>>& l
   {
     fail("its boundary loops cross");
   }
-  if (static_cast<int>(D->cdt.number_of_vertices()) != D->count)
+  if (static_cast<int>(D->cdt.number_of_vertices()) != D->count - D->shared)
     fail("two of its boundary vertices coincide");
 }
 

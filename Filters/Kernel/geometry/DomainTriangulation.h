@@ -18,8 +18,9 @@ namespace exactmat
 class DomainTriangulation
 {
 public:
-  /// The loops' vertices are numbered loop after loop from 0. Throws InputError when a
-  /// loop has fewer than three vertices, loops cross, or two vertices coincide.
+  /// The loops' vertices are numbered loop after loop from 0. Two loops may touch at a
+  /// vertex (its first number is the one triangles use). Throws InputError when a loop has
+  /// fewer than three vertices, loops cross, or two vertices of one loop coincide.
   explicit DomainTriangulation(const std::vector<std::vector<Vec2>>& loops);
   ~DomainTriangulation();
   DomainTriangulation(const DomainTriangulation&) = delete;

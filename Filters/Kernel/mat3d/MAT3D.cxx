@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <set>
@@ -20,6 +21,10 @@ namespace exactmat
 
 namespace
 {
+// The work (boxes searched) a restart on a solid with curved faces may spend.
+constexpr std::uint64_t RestartWorkBudget = 1000000;
+constexpr int MaxRestartSearchBoxes = 20000;
+
 using Triplet = std::array<int, 3>;
 
 Triplet sorted(Triplet t)
@@ -121,6 +126,8 @@ private:
   bool step(const MedialBall3D& from, const Eigen::VectorXd& t, double h, MedialBall3D& to) const;
   MedialBall3D junction(const MedialBall3D& before, const Eigen::VectorXd& t, double h, bool& tangential) const;
   void polishJunction(MedialBall3D& j, double reach = 0.0) const;
+  void appendTouching(MedialBall3D& j, double tangency = 1e-8) const;
+  bool kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, const MedialBall3D& to, MedialBall3D& at) const;
   std::string describe(const MedialBall3D& ball) const;
   void reportProgress();
   void collectSheets();
@@ -153,6 +160,7 @@ private:
   int ReachedCount = 0;
   std::vector<int> Queue;
   int RestartNode = -1;     // the seam point a restart traces from (not a node of the MAT)
+  std::uint64_t RestartWorkLimit = 0; // patchSearchWork() at which a restart gives up (0: none)
   std::set<int> Spliced;    // restart points whose two seams became one
 };
 
@@ -921,12 +929,17 @@ void Tracer::polishJunction(MedialBall3D& j, double reach) const
       fail("3D MAT: the junction near ", describe(j), " could not be polished");
     j = polished;
   }
-  // Every entity touching the polished ball is a generator of the seams leaving it, also
-  // where another touches at the same point and so added no equation above: a wall touched
-  // at its foot on a reflex edge and that edge (the ball's normal at the end of the edge's
-  // arc) start different seams (up the wall; along the edge's sheet below it), and so do the
-  // collinear pieces of an edge meeting there. Appended after the solve (a repeated point
-  // is a repeated equation); the seams leaving solve their own triplets.
+  appendTouching(j);
+}
+
+// Every entity touching the ball (to 1e-10 of the size) joins its generators, also where
+// another touches at the same point and so adds no equation: a wall touched at its foot on
+// a reflex edge and that edge (the ball's normal at the end of the edge's arc) start
+// different seams (up the wall; along the edge's sheet below it), and so do the collinear
+// pieces of an edge meeting there. Appended after a junction's solve (a repeated point is
+// a repeated equation); the seams leaving solve their own triplets.
+void Tracer::appendTouching(MedialBall3D& j, double tangency) const
+{
   for (int f : Tree.candidatesWithin(j.x, j.r + 1e-6 * Size))
   {
     const Vec3 foot = Generators[f].nearestPoint(j.x);
@@ -935,7 +948,7 @@ void Tracer::polishJunction(MedialBall3D& j, double reach) const
       continue;
     const Vec3 normal = Generators[f].evaluate(Generators[f].parameterOf(foot)).normal;
     std::vector<int> touching;
-    if ((j.x - foot).cross(normal).norm() <= 1e-8 * footDistance)
+    if ((j.x - foot).cross(normal).norm() <= tangency * footDistance)
       touching.push_back(f);
     for (int g : reflexEntitiesAt(f, foot, 1e-9 * Size))
       if (Generators[g].exitSide(Generators[g].touchParameter(foot, j.x), 1e-9 * Size) < 0)
@@ -947,6 +960,142 @@ void Tracer::polishJunction(MedialBall3D& j, double reach) const
         j.q.push_back(g == f ? Generators[g].parameterOf(foot) : Generators[g].touchParameter(foot, j.x));
       }
   }
+}
+
+// A face the seam's ball touches in passing within the step from `from` by h along t (to
+// `to`): a kiss. The ball comes to the face tangentially and leaves it again without
+// entering, so the emptiness test sees nothing — yet the ball touches four entities there
+// and other seams pass through (a symmetric part: the seam round a hole touches the one
+// along the outer wall where the hole is as far from the wall as the plate is thick). The
+// gap d − r of a face outside the generators changes by at most |Δx| + |Δr| over the step,
+// so only faces that near both ends can be kissed; a parabola through their gaps at the
+// ends and the middle that dips towards zero inside the step is followed by a golden-section
+// search on the true seam balls. True with `at` the seam ball where the gap vanishes (to
+// 1e-10 of the size), the kissing entities added to its generators.
+bool Tracer::kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, const MedialBall3D& to, MedialBall3D& at) const
+{
+  const double reach = 1.5 * ((to.x - from.x).norm() + std::abs(to.r - from.r));
+  const double touching = std::max(Margin, Degenerate);
+  // The gap to a surface, not to its pieces: a piece's own gap has a kink where the nearest
+  // point leaves it (a hole's cylinder cut into quarters right where the seam kisses it).
+  std::map<int, std::vector<int>> surfaces;
+  for (int f : facesOutside(from, from.r + reach))
+    if (Generators[f].polygon() || patchComesWithin(B.faces()[f].patch, from.x, from.r + reach))
+      surfaces[B.faces()[f].entity >= 0 ? B.faces()[f].entity : -1 - f].push_back(f);
+  auto gap = [&](const std::vector<int>& faces, const MedialBall3D& b, int* nearest = nullptr) {
+    double best = Unbounded;
+    for (int f : faces)
+      if (const double d = Generators[f].distance(b.x) - b.r; d < best)
+      {
+        best = d;
+        if (nearest)
+          *nearest = f;
+      }
+    return best;
+  };
+  MedialBall3D middle;
+  bool haveMiddle = false;
+  for (const auto& [surface, faces] : surfaces)
+  {
+    // (A surface touching at the start is the start node's, not a kiss.)
+    const double g0 = gap(faces, from), g1 = gap(faces, to);
+    if (g0 > reach || g1 > reach || g0 <= touching)
+      continue;
+    if (!haveMiddle && !(haveMiddle = step(from, t, 0.5 * h, middle)))
+      return false; // (the step itself solved: Newton from half way fails only in pathology)
+    const double gm = gap(faces, middle);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "   kiss? surface %d gaps %.3g %.3g %.3g\n", surface, g0, gm, g1);
+#endif
+    // The parabola through (0, g0), (½, gm), (1, g1): a minimum inside, near zero.
+    const double a = 2.0 * (g0 - 2.0 * gm + g1), b = -3.0 * g0 + 4.0 * gm - g1;
+    double lo = 0.0, hi = 1.0;
+    if (g1 < -touching)
+      continue; // it enters the ball: a junction, which the emptiness test finds
+    if (g1 <= touching)
+      lo = hi = 1.0; // the end ball touches already
+    else
+    {
+      if (a <= 0.0)
+        continue;
+      const double s = -b / (2.0 * a), dip = g0 - b * b / (4.0 * a);
+      if (s <= 0.0 || s >= 1.0 || dip > 0.25 * std::min({ g0, gm, g1 }))
+        continue;
+      // Golden section on the true gap, about the parabola's minimum.
+      const double invPhi = 0.5 * (std::sqrt(5.0) - 1.0);
+      lo = std::max(0.0, s - 0.25);
+      hi = std::min(1.0, s + 0.25);
+      bool solved = true;
+      auto gapAt = [&](double u) {
+        MedialBall3D m;
+        solved = solved && step(from, t, u * h, m);
+        return solved ? gap(faces, m) : Unbounded;
+      };
+      double c = hi - invPhi * (hi - lo), d = lo + invPhi * (hi - lo);
+      double gc = gapAt(c), gd = gapAt(d);
+      for (int k = 0; k < 60 && solved && (hi - lo) * h > 1e-12 * Size; ++k)
+        if (gc < gd)
+        {
+          hi = d;
+          d = c;
+          gd = gc;
+          c = hi - invPhi * (hi - lo);
+          gc = gapAt(c);
+        }
+        else
+        {
+          lo = c;
+          c = d;
+          gc = gd;
+          d = lo + invPhi * (hi - lo);
+          gd = gapAt(d);
+        }
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "   kiss golden section: solved %d gap %.3g at %.9g (touching %.3g)\n", (int)solved, std::min(gc, gd), gc < gd ? c : d, touching);
+#endif
+      if (!solved || std::abs(std::min(gc, gd)) > touching)
+        continue;
+      lo = hi = gc < gd ? c : d;
+    }
+    MedialBall3D m;
+    int f = -1;
+    if (!step(from, t, lo * h, m))
+      continue;
+    gap(faces, m, &f);
+    // A contact of its own, not a neighbour of a touched face meeting it at its touch (a
+    // coplanar piece whose side the touch is crossing).
+    const Vec3 foot = Generators[f].nearestPoint(m.x);
+    bool distinct = true;
+    for (int i = 0; i < m.size() && distinct; ++i)
+      distinct = !sameContact(m, Generators[m.generators[i]].evaluate(m.q[i]).point, foot);
+#ifdef EXACTMAT_TRACE3D_DEBUG
+    std::fprintf(stderr, "   kiss at %s: face %d distinct %d\n", describe(m).c_str(), f, (int)distinct);
+#endif
+    if (!distinct)
+      continue;
+    // (Where the gap is least the seam is located only to about the square root of the
+    // rounding: the centre is off the kissing face's normal by about 1e-8 of the radius.)
+    appendTouching(m, 1e-6);
+    // A fourth contact point, not another entity touching at one of the three (the reflex
+    // edges ending at a corner the seam's ball rolls round).
+    bool fourth = false;
+    for (int i = 3; i < m.size() && !fourth; ++i)
+    {
+      const Vec3 p = Generators[m.generators[i]].evaluate(m.q[i]).point;
+      fourth = true;
+      for (int k = 0; k < 3 && fourth; ++k)
+        fourth = !sameContact(m, Generators[m.generators[k]].evaluate(m.q[k]).point, p);
+    }
+    if (fourth)
+    {
+#ifdef EXACTMAT_TRACE3D_DEBUG
+      std::fprintf(stderr, "KISS %s\n", describe(m).c_str());
+#endif
+      at = m;
+      return true;
+    }
+  }
+  return false;
 }
 
 void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, int touchpoints)
@@ -985,10 +1134,22 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   int endNode = -1;
   int stalled = 0; // crossings in a row that made no progress along the seam
   Vec3 lastCrossing = Vec3::Constant(Unbounded);
+  // A seam traced from a restart point (no node) that comes round to it is a closed loop:
+  // the chord of a step (or of the step to a crossing: the restart point may lie on a face
+  // side) passes the point.
+  auto comesRound = [&](const Vec3& a, const Vec3& b) {
+    if (startNode != RestartNode || seam.balls.size() <= 2)
+      return false;
+    const Vec3 chord = b - a, start = Result.nodes[startNode].ball.x;
+    const double s = chord.squaredNorm() > 0.0 ? std::clamp((start - a).dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (a + s * chord - start).norm() <= 2.0 * tol + NodeMerge;
+  };
   for (int n = 0; n < Options.maxStepsPerSeam && endNode < 0; ++n)
   {
     if (n + 1 == Options.maxStepsPerSeam)
       fail("3D MAT: the seam through ", describe(ball), " did not end within ", Options.maxStepsPerSeam, " steps");
+    if (RestartWorkLimit > 0 && patchSearchWork() > RestartWorkLimit)
+      fail("3D MAT: the restart tracing the seam through ", describe(ball), " ran out of its budget");
     Eigen::VectorXd t = n == 0 ? tangent : System.tangent(ball);
     // Oriented by the centre and radius: the touch parameters change meaning across edges.
     if (t.segment<4>(6).dot(previous.segment<4>(6)) < 0.0)
@@ -1089,6 +1250,8 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       MedialBall3D touching = at;
       if (empty(at) && contactCount(at) != seam.touchpoints)
         polishJunction(touching);
+      else if (seam.touchpoints == 3 && empty(at) && kiss(ball, t, lo, at, touching))
+        tangential = true;
       if (!empty(at) || touching.size() > 3)
       {
         const MedialBall3D j = touching.size() > 3 ? touching : junctionSinceCheck(ball, t, lo);
@@ -1107,6 +1270,12 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       {
         seam.balls.push_back(at);
         endNode = seamEndAtVertex(at, a, b);
+        break;
+      }
+      if (comesRound(ball.x, at.x))
+      {
+        seam.balls.push_back(seam.balls.front());
+        endNode = startNode;
         break;
       }
       const int face = at.generators[leaving];
@@ -1183,6 +1352,16 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       seam.balls.push_back(j);
       break;
     }
+    if (MedialBall3D j; seam.touchpoints == 3 && kiss(ball, t, h, next, j))
+    {
+      // (Located by the gap's minimum: to about the square root of the rounding.)
+      const size_t known = Result.nodes.size();
+      endNode = addNode(j, -1, 1e-5 * Size);
+      if (Result.nodes.size() > known)
+        Result.nodes[endNode].imprecise = true;
+      seam.balls.push_back(j);
+      break;
+    }
     if (check)
       lastChecked = seam.balls.size(); // `next`, pushed below
     // A degenerate seam (more touchpoints than its triplet: a square tube's axis) ends
@@ -1216,17 +1395,11 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       seam.balls.push_back(last);
       break;
     }
-    // A seam traced from a restart point (no node) that comes round to it is a closed loop.
-    if (startNode == RestartNode && seam.balls.size() > 2)
+    if (comesRound(ball.x, next.x))
     {
-      const Vec3 a = ball.x, chord = next.x - ball.x, start = Result.nodes[startNode].ball.x;
-      const double s = chord.squaredNorm() > 0.0 ? std::clamp((start - a).dot(chord) / chord.squaredNorm(), 0.0, 1.0) : 0.0;
-      if ((a + s * chord - start).norm() <= 2.0 * tol + NodeMerge)
-      {
-        seam.balls.push_back(seam.balls.front());
-        endNode = startNode;
-        break;
-      }
+      seam.balls.push_back(seam.balls.front());
+      endNode = startNode;
+      break;
     }
 #ifdef EXACTMAT_TRACE3D_DEBUG
     std::fprintf(stderr, "  step h %.3g to %s; exits", h, describe(next).c_str());
@@ -1680,15 +1853,38 @@ MedialBall3D Tracer::grownBall(int g, const Vec3& point, const Vec3& normal) con
   MedialBall3D ball;
   ball.generators = { g };
   ball.q = { gen.kind() == GeneratorKind3D::Face ? gen.parameterOf(point) : gen.touchParameter(point, point + normal) };
-  double lo = 0.0, hi = Size;
-  for (int k = 0; k < 200 && hi - lo > 1e-14 * Size; ++k)
+  // The shrinking ball (Ma, Bae, Choi & Park 2012): the nearest point q of the boundary
+  // inside a ball too big gives the ball touching the point and q, smaller; repeated until
+  // nothing is nearer than the radius (the radii decrease to the largest empty one: every
+  // ball touching the point and a boundary point is at least that big). One closest-point
+  // query per face near the centre a round — the bisection on the exact emptiness test it
+  // replaces subdivided for a second a ball against faces touching it tangentially (a
+  // restart on an extruded blob: 160 s of walks).
+  double r = Size;
+  for (int k = 0; k < 200 && !(RestartWorkLimit > 0 && patchSearchWork() > RestartWorkLimit); ++k)
   {
-    ball.r = 0.5 * (lo + hi);
-    ball.x = point + ball.r * normal;
-    (empty(ball) ? lo : hi) = ball.r;
+    ball.r = r;
+    ball.x = point + r * normal;
+    double nearest = r * (1.0 - 1e-12);
+    Vec3 q = point;
+    for (int f : facesOutside(ball, r))
+    {
+      const Vec3 foot = Generators[f].nearestPoint(ball.x);
+      if (const double d = (foot - ball.x).norm(); d < nearest)
+      {
+        nearest = d;
+        q = foot;
+      }
+    }
+    const Vec3 e = q - point;
+    const double along = normal.dot(e);
+    if (along <= 0.0) // nothing inside (or only the rounding of the point itself)
+      break;
+    const double smaller = e.squaredNorm() / (2.0 * along);
+    if (!(smaller < r))
+      break;
+    r = smaller;
   }
-  ball.r = lo;
-  ball.x = point + lo * normal;
   return ball;
 }
 
@@ -1736,6 +1932,24 @@ bool Tracer::onTracedSeam(const MedialBall3D& ball) const
 // reaches start the rest as usual. False when no walk finds a seam not traced yet.
 bool Tracer::restartFrom(int face)
 {
+  // A budget for curved solids: their walks and seams cost closest-point searches that
+  // balls touching free-form faces tangentially make slow (an extruded blob, whose sheets
+  // end in fin points the tracer does not know yet: minutes of walks and seams that fail
+  // anyway). Counted in boxes searched, so that it gives up at the same point on every
+  // machine. (A plate's restarts need 40 000 boxes each, a short cylinder's 20 000.)
+  struct Budget
+  {
+    std::uint64_t& limit;
+    ~Budget() { limit = 0; }
+  } budget{ RestartWorkLimit };
+  const bool polyhedron = std::all_of(Generators.begin(), Generators.begin() + B.faces().size(),
+    [](const Generator3D& g) { return g.polygon(); });
+  RestartWorkLimit = polyhedron ? 0 : patchSearchWork() + RestartWorkBudget;
+  // (And no one closest-point search may spend a large part of it: those next to the
+  // collapsed corner of a triangular piece follow a near-continuum of minima.)
+  const PatchSearchLimit perSearch(polyhedron ? std::numeric_limits<int>::max() : MaxRestartSearchBoxes);
+  auto exhausted = [&]() { return RestartWorkLimit > 0 && patchSearchWork() > RestartWorkLimit; };
+
   const int samples = 16;
   const Generator3D& own = Generators[face];
   const BezierPatch& patch = B.faces()[face].patch;
@@ -1864,6 +2078,8 @@ bool Tracer::restartFrom(int face)
       std::vector<int> seen;
       for (int k = 0; k <= samples; ++k)
       {
+        if (exhausted())
+          return false;
         const double s1 = static_cast<double>(k) / samples;
         const MedialBall3D after = leg(s1);
         const std::vector<int> now = othersTouching(after);
@@ -1881,7 +2097,7 @@ bool Tracer::restartFrom(int face)
         {
           double lo = s0, hi = s1;
           MedialBall3D at = after;
-          for (int b = 0; b < 50; ++b)
+          for (int b = 0; b < 50 && !exhausted(); ++b)
           {
             const double mid = 0.5 * (lo + hi);
             const MedialBall3D m = leg(mid);
@@ -2105,14 +2321,9 @@ MAT3D Tracer::run()
   };
   markTouched();
   // A face no seam touches yet is tried once as a restart (each finds one seam; the
-  // junctions on it lead to the others). Polyhedra only: a grown ball that comes near a
-  // curved face tangentially (a hole's cylinder, a fillet) costs the exact emptiness test
-  // seconds of subdivision per ball (a bracket with round holes: 77 s of restarts that
-  // found nothing) — and such solids' missing seams are mostly rims and circles of contact,
-  // which are not traced yet anyway.
-  const bool polyhedron = std::all_of(Generators.begin(), Generators.begin() + faces,
-    [](const Generator3D& g) { return g.polygon(); });
-  for (int f = 0; f < faces && polyhedron; ++f)
+  // junctions on it lead to the others): a short cylinder's circular seam, a plate's seams
+  // along its walls and round its holes, which no convex vertex leads to.
+  for (int f = 0; f < faces; ++f)
     if (!touched[root(f)] && root(f) == f && restartFrom(f))
     {
       for (; started < Queue.size(); ++started)
