@@ -4,8 +4,6 @@
 #include "geometry/ClosestPoint.h"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <cmath>
 #include <sstream>
 
@@ -442,18 +440,7 @@ Vec3 Generator3D::nearestPoint(const Vec3& x) const
     return a + std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0) * e;
   }
   if (Polygon.empty())
-  {
-#ifdef EXACTMAT_TRACE3D_DEBUG
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto cp = closestPoint(Boundary->faces()[Entity].patch, x);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (ms > 20)
-      std::fprintf(stderr, "SLOW closest point face %d query (%.9g %.9g %.9g) distance %.9g %.1f ms u %.6g v %.6g\n", Entity, x.x(), x.y(), x.z(), cp.distance, ms, cp.u, cp.v);
-    return cp.point;
-#else
     return closestPoint(Boundary->faces()[Entity].patch, x).point;
-#endif
-  }
   const Vec2 q = parameterOf(x);
   if (exitSide(q, 0.0) < 0)
     return evaluate(q).point;
