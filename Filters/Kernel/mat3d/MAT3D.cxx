@@ -1132,6 +1132,16 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
   };
   Eigen::VectorXd previous = tangent;
   int endNode = -1;
+  // The seam ends at junction j. One located loosely — along a degenerate seam, where a
+  // contact comes or leaves tangentially, or a kiss: to about the square root of the
+  // rounding — is the junction reached from elsewhere within 1e-5 of the size, and marked.
+  auto endAt = [&](const MedialBall3D& j, bool loose) {
+    const size_t known = Result.nodes.size();
+    endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
+    if (loose && Result.nodes.size() > known)
+      Result.nodes[endNode].imprecise = true;
+    seam.balls.push_back(j);
+  };
   int stalled = 0; // crossings in a row that made no progress along the seam
   Vec3 lastCrossing = Vec3::Constant(Unbounded);
   // A seam traced from a restart point (no node) that comes round to it is a closed loop:
@@ -1257,12 +1267,7 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
         const MedialBall3D j = touching.size() > 3 ? touching : junctionSinceCheck(ball, t, lo);
         // Along a degenerate seam the ball's place is not pinned by its own equations: the
         // junction is known only as well as the contact count locates it.
-        const bool loose = seam.touchpoints > 3 || tangential;
-        const size_t known = Result.nodes.size();
-        endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
-        if (loose && Result.nodes.size() > known)
-          Result.nodes[endNode].imprecise = true;
-        seam.balls.push_back(j);
+        endAt(j, seam.touchpoints > 3 || tangential);
         break;
       }
       // Two touchpoints meeting at a vertex as the touch leaves (the seam reaches a rim).
@@ -1344,22 +1349,12 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
     {
       const MedialBall3D j = junctionSinceCheck(ball, t, h);
       // (As at a crossing: a degenerate seam's junction is located loosely.)
-      const bool loose = seam.touchpoints > 3 || tangential;
-      const size_t known = Result.nodes.size();
-      endNode = addNode(j, -1, loose ? 1e-5 * Size : 0.0);
-      if (loose && Result.nodes.size() > known)
-        Result.nodes[endNode].imprecise = true;
-      seam.balls.push_back(j);
+      endAt(j, seam.touchpoints > 3 || tangential);
       break;
     }
     if (MedialBall3D j; seam.touchpoints == 3 && kiss(ball, t, h, next, j))
     {
-      // (Located by the gap's minimum: to about the square root of the rounding.)
-      const size_t known = Result.nodes.size();
-      endNode = addNode(j, -1, 1e-5 * Size);
-      if (Result.nodes.size() > known)
-        Result.nodes[endNode].imprecise = true;
-      seam.balls.push_back(j);
+      endAt(j, true); // (located by the gap's minimum)
       break;
     }
     if (check)
@@ -1385,14 +1380,8 @@ void Tracer::trace(int startNode, MedialBall3D ball, Eigen::VectorXd tangent, in
       polishJunction(last);
       if (last.size() < 4)
         fail("3D MAT: the degenerate seam through ", describe(ball), " loses a touchpoint where no junction is found");
-      // A contact that leaves tangentially is located only to about the square root of the
-      // rounding (and the degenerate system does not sharpen it): the junction reached from
-      // elsewhere is the same one.
-      const size_t before = Result.nodes.size();
-      endNode = addNode(last, -1, 1e-5 * Size);
-      if (Result.nodes.size() > before)
-        Result.nodes[endNode].imprecise = true;
-      seam.balls.push_back(last);
+      // (A contact that leaves tangentially: the degenerate system does not sharpen it.)
+      endAt(last, true);
       break;
     }
     if (comesRound(ball.x, next.x))
