@@ -998,8 +998,10 @@ bool Tracer::kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
   for (const auto& [surface, faces] : surfaces)
   {
     // (A surface touching at the start is the start node's, not a kiss.)
+    // (The gap changes by at most `reach` over the step: a surface that cannot come down to
+    // zero between both ends is skipped before the middle ball is solved.)
     const double g0 = gap(faces, from), g1 = gap(faces, to);
-    if (g0 > reach || g1 > reach || g0 <= touching)
+    if (g0 > reach || g1 > reach || g0 <= touching || (g1 > touching && g0 + g1 - reach > 2.0 * touching))
       continue;
     if (!haveMiddle && !(haveMiddle = step(from, t, 0.5 * h, middle)))
       return false; // (the step itself solved: Newton from half way fails only in pathology)
