@@ -995,8 +995,9 @@ bool Tracer::kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
   };
   MedialBall3D middle;
   bool haveMiddle = false;
-  for (const auto& [surface, faces] : surfaces)
+  for (const auto& entry : surfaces)
   {
+    const std::vector<int>& faces = entry.second; // (a name of its own: lambdas below capture it)
     // (A surface touching at the start is the start node's, not a kiss.)
     // (The gap changes by at most `reach` over the step: a surface that cannot come down to
     // zero between both ends is skipped before the middle ball is solved.)
@@ -1007,7 +1008,7 @@ bool Tracer::kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
       return false; // (the step itself solved: Newton from half way fails only in pathology)
     const double gm = gap(faces, middle);
 #ifdef EXACTMAT_TRACE3D_DEBUG
-    std::fprintf(stderr, "   kiss? surface %d gaps %.3g %.3g %.3g\n", surface, g0, gm, g1);
+    std::fprintf(stderr, "   kiss? surface %d gaps %.3g %.3g %.3g\n", entry.first, g0, gm, g1);
 #endif
     // The parabola through (0, g0), (½, gm), (1, g1): a minimum inside, near zero.
     const double a = 2.0 * (g0 - 2.0 * gm + g1), b = -3.0 * g0 + 4.0 * gm - g1;
