@@ -36,9 +36,11 @@
  * "start,2,5"; "start"/"end" = the profile faces, "v<vertex>" = a reflex edge).
  *
  * Sheets of a solid's MAT (field data of vtkMAT3DFilter's output, one tuple per sheet):
- * `SheetGovernors` (string: the FaceIds of the sheet's face pair, "0,4"), `SheetSeams`
- * (string: the ElementIds of the seams on its border, "5 9 12"), `SheetConvexEdges` (string:
- * the face pairs of the convex edges on its border, where its radius is 0, "0/4").
+ * `SheetGovernors` (string: the FaceIds of the sheet's face pair, "0,4"; a face that is one
+ * of several cells under one FaceId — a CAD face tiled into patches — is "FaceId:cell",
+ * "2:1"), `SheetSeams` (string: the ElementIds of the seams on its border, "5 9 12"),
+ * `SheetConvexEdges` (string: the face pairs of the convex edges on its border, where its
+ * radius is 0, "0/4").
  * vtkSheetInterpolator adds the sheets as triangles (`ElementType` 7) with cell data
  * `SheetId` (int: the sheet's tuple above, −1 for other cells) and field data
  * `SheetStatus` (int per tuple: 1 interpolated, 0 empty, −1 failed) and `SheetMessage`.

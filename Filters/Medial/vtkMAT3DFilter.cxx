@@ -67,8 +67,8 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   const exactmat::MAT3D mat = exactmat::computeMAT3D(boundary, options);
   result.measure("TracingSeconds", secondsSince(t0));
   const exactmat::MedialComplex complex = mat.complex();
-  auto faceId = [&boundary](int f) { return exactmat::faceLabel(boundary, f); };
-  auto generatorId = [&mat, &boundary](int g) { return exactmat::generatorLabel(boundary, mat.generators[g].faces); };
+  const exactmat::FaceLabels labels(boundary);
+  auto generatorId = [&mat, &labels](int g) { return labels.generator(mat.generators[g].faces); };
   auto generatorIds = [&generatorId](const exactmat::MedialElement& e) {
     std::string out;
     for (int g : e.governors)
@@ -94,8 +94,7 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
     for (int s : sheet.seams)
       seams += (seams.empty() ? "" : " ") + std::to_string(junctions + s);
     for (int e : sheet.convexEdges)
-      edges += (edges.empty() ? "" : " ") + faceId(boundary.edges()[e].faceA) + "/" +
-        faceId(boundary.edges()[e].faceB);
+      edges += (edges.empty() ? "" : " ") + labels.edge(e);
     sheetSeams->InsertNextValue(seams);
     sheetEdges->InsertNextValue(edges);
   }

@@ -503,15 +503,16 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
 
   // The sheets' topology: generator pairs by label, seams by ElementId, convex edges by
   // their faces' labels.
+  const FaceLabels faceLabels(boundary);
   std::map<std::string, int> generatorByLabel;
   for (int g = 0; g < static_cast<int>(generators.size()); ++g)
-    generatorByLabel[generatorLabel(boundary, generators[g].faces())] = g;
+    generatorByLabel[faceLabels.generator(generators[g].faces())] = g;
   std::map<std::string, int> edgeByLabel;
   for (int e = 0; e < static_cast<int>(boundary.edges().size()); ++e)
   {
     const Edge3D& edge = boundary.edges()[e];
-    edgeByLabel[faceLabel(boundary, edge.faceA) + "/" + faceLabel(boundary, edge.faceB)] = e;
-    edgeByLabel[faceLabel(boundary, edge.faceB) + "/" + faceLabel(boundary, edge.faceA)] = e;
+    edgeByLabel[faceLabels.edge(e)] = e;
+    edgeByLabel[faceLabels.face(edge.faceB) + "/" + faceLabels.face(edge.faceA)] = e;
   }
   vtkStringArray* sheetGovernors = fieldStrings(mat, arrays::SheetGovernors);
   vtkStringArray* sheetSeams = fieldStrings(mat, arrays::SheetSeams);
@@ -560,6 +561,14 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   // Each sheet's border curves and label (checking the input as it goes).
   std::vector<std::vector<SheetBorderCurve>> borders(groups.size());
   std::vector<std::string> labels(groups.size());
+  // A sheet is named by its sides' entities, each once ("1,4": a plate's face tiled into
+  // 66 patches, and the other face); its tuples name its faces one by one.
+  auto entityLabel = [&faceLabels](const std::vector<int>& faces) {
+    std::string out;
+    for (int f : faces)
+      out += (out.empty() ? "" : "/") + faceLabels.entity(f);
+    return out;
+  };
   auto sideLabel = [&](const SheetGroup& group) {
     std::string out;
     for (const std::vector<int>* side : { &group.a, &group.b })
@@ -568,7 +577,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
       // (The pieces of one entity — a plate's face tiled into 66 patches — named once.)
       std::vector<std::string> named;
       for (int g : *side)
-        if (const std::string l = generatorLabel(boundary, generators[g].faces());
+        if (const std::string l = entityLabel(generators[g].faces());
             std::find(named.begin(), named.end(), l) == named.end())
         {
           out += (named.empty() ? "" : "+") + l;
@@ -688,13 +697,12 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     {
       tupleIds[k].push_back(tuples + static_cast<int>(extraGovernors.size()));
       auto label = [&](const std::vector<int>& side) {
-        return generatorLabel(boundary, generators[side.front()].faces());
+        return faceLabels.generator(generators[side.front()].faces());
       };
       extraGovernors.push_back(label(groups[k].a) + "," + label(groups[k].b));
       std::string edges;
       for (int e : convexEdgesBetween(boundary, generators, groups[k]))
-        edges += (edges.empty() ? "" : " ") + faceLabel(boundary, boundary.edges()[e].faceA) + "/" +
-          faceLabel(boundary, boundary.edges()[e].faceB);
+        edges += (edges.empty() ? "" : " ") + faceLabels.edge(e);
       extraEdges.push_back(edges);
     }
   }
@@ -853,7 +861,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
     if (c.shortfall() > 10.0 * this->Tolerance + 1e-9 && ++uncoveredFaces == 1)
     {
       std::ostringstream line;
-      line << "face " << faceLabel(boundary, c.face) << ": its sheets touch " << 100.0 * c.covered / c.area
+      line << "face " << faceLabels.face(c.face) << ": its sheets touch " << 100.0 * c.covered / c.area
            << " % of it";
       uncovered = line.str();
     }

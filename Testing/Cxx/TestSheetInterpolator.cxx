@@ -429,6 +429,43 @@ TEST(vtkSheetInterpolator, NotchedCubeIsCompleteAndExact)
   EXPECT_LE(p.sheets->GetMaximumFitError(), 1e-4);
 }
 
+TEST(vtkSheetInterpolator, FacesOfOneEntityKeepTheirOwnSheets)
+{
+  // A CAD reader tiles one file face into several cells under one FaceId (the STEP
+  // bracket's rounded corners, two tiles each). The sheets' topology names faces by label:
+  // when tiles shared one, the pairs of all of them collapsed onto the last (16 of the
+  // bracket's faces had no sheet). Every face of the notched cube under one FaceId: the
+  // same sheets as with a FaceId each, and labels that tell the tiles apart.
+  vtkNew<vtkNURBSSource> notched;
+  notched->SetShapeName("notched-cube");
+  notched->Update();
+  vtkNew<vtkUnstructuredGrid> oneEntity;
+  oneEntity->DeepCopy(notched->GetOutput());
+  vtkDataArray* faceIds = oneEntity->GetCellData()->GetArray(arrays::FaceId);
+  ASSERT_TRUE(faceIds);
+  for (vtkIdType c = 0; c < faceIds->GetNumberOfTuples(); ++c)
+    faceIds->SetTuple1(c, 7);
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(oneEntity);
+  Pipeline tiled(producer), separate(notched);
+  ASSERT_TRUE(tiled.errors->Messages.empty()) << tiled.errors->Messages;
+  EXPECT_TRUE(tiled.sheets->GetVerificationPassed()) << tiled.warnings->Messages;
+  EXPECT_EQ(tiled.sheets->GetNumberOfFailedSheets(), 0);
+  EXPECT_EQ(tiled.sheets->GetNumberOfSheets(), separate.sheets->GetNumberOfSheets());
+  EXPECT_EQ(tiled.sheets->GetNumberOfTriangles(), separate.sheets->GetNumberOfTriangles());
+  EXPECT_LE(tiled.sheets->GetMaximumCoverageShortfall(), 1e-9);
+  auto* governors = vtkStringArray::SafeDownCast(
+    tiled.sheets->GetOutput()->GetFieldData()->GetAbstractArray(arrays::SheetGovernors));
+  ASSERT_TRUE(governors && governors->GetNumberOfValues() > 0);
+  std::set<std::string> pairs;
+  for (vtkIdType s = 0; s < governors->GetNumberOfValues(); ++s)
+  {
+    EXPECT_EQ(governors->GetValue(s).rfind("7:", 0), 0u) << governors->GetValue(s);
+    pairs.insert(governors->GetValue(s));
+  }
+  EXPECT_EQ(static_cast<vtkIdType>(pairs.size()), governors->GetNumberOfValues());
+}
+
 TEST(vtkSheetInterpolator, NotchedCubeFarFromTheOriginIsComplete)
 {
   // 4e5 × its size from the origin: the seams reach the interpolator through the output's

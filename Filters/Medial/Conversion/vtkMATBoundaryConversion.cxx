@@ -473,18 +473,40 @@ void BoundaryGridBuilder::addShape(const Shape& shape)
   }
 }
 
-std::string faceLabel(const Boundary3D& boundary, int face)
+FaceLabels::FaceLabels(const Boundary3D& boundary)
+  : B(boundary)
 {
-  const Face3D& f = boundary.faces()[face];
+  std::map<int, int> count;
+  for (const Face3D& f : boundary.faces())
+    if (f.entity >= 0)
+      ++count[f.entity];
+  for (const Face3D& f : boundary.faces())
+    EntityFaces.push_back(f.entity >= 0 ? count[f.entity] : 1);
+}
+
+std::string FaceLabels::entity(int face) const
+{
+  const Face3D& f = B.faces()[face];
   return std::to_string(f.entity >= 0 ? f.entity : f.piece);
 }
 
-std::string generatorLabel(const Boundary3D& boundary, const std::vector<int>& faces)
+std::string FaceLabels::face(int face) const
+{
+  return EntityFaces[face] > 1 ? entity(face) + ":" + std::to_string(B.faces()[face].piece) : entity(face);
+}
+
+std::string FaceLabels::generator(const std::vector<int>& faces) const
 {
   std::string out;
   for (int f : faces)
-    out += (out.empty() ? "" : "/") + faceLabel(boundary, f);
+    out += (out.empty() ? "" : "/") + face(f);
   return out;
+}
+
+std::string FaceLabels::edge(int edge) const
+{
+  const Edge3D& e = B.edges()[edge];
+  return face(e.faceA) + "/" + face(e.faceB);
 }
 
 } // namespace exactmat

@@ -34,12 +34,29 @@ std::vector<CurvePiece> curvePiecesFromGrid(vtkUnstructuredGrid* grid);
 /// The surface cells of `grid` as B-rep pieces (triangles keep their triangular net).
 std::vector<PatchPiece> patchPiecesFromGrid(vtkUnstructuredGrid* grid);
 
-/// A face as the user knows it: its FaceId (the entity), or its cell's index when the grid
-/// has none.
-std::string faceLabel(const Boundary3D& boundary, int face);
-/// A generator of a solid's MAT (a face, a reflex edge or a reflex corner) by the faces it
-/// lies on: "4", "12/13", "3/9/10".
-std::string generatorLabel(const Boundary3D& boundary, const std::vector<int>& faces);
+/// Faces as the user knows them: each face's FaceId (the file's entity), or its cell's
+/// index when the grid has none. Where one entity is tiled into several cells (a STEP face
+/// cut into Bézier patches) the cell follows after a colon, "12:40", so every face has a
+/// label of its own: the sheets' topology (SheetGovernors, SheetConvexEdges) names faces by
+/// these labels, and two tiles under one name would merge their sheets' pairs.
+class FaceLabels
+{
+public:
+  explicit FaceLabels(const Boundary3D& boundary);
+  /// The face's own label: "4", or "12:40" for one tile of entity 12.
+  std::string face(int face) const;
+  /// The entity alone ("12" for each of its tiles), for names of whole sheets.
+  std::string entity(int face) const;
+  /// A generator of a solid's MAT (a face, a reflex edge or a reflex corner) by the faces it
+  /// lies on: "4", "12/13", "3/9/10".
+  std::string generator(const std::vector<int>& faces) const;
+  /// A convex (or any) edge by its two faces: "4/7".
+  std::string edge(int edge) const;
+
+private:
+  const Boundary3D& B;
+  std::vector<int> EntityFaces; ///< per face: how many faces share its entity
+};
 
 /// True when the grid holds surface cells (a 3D boundary), false for curve cells.
 bool gridHasSurfaceCells(vtkUnstructuredGrid* grid);
