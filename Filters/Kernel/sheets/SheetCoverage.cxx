@@ -70,8 +70,6 @@ public:
     Last.assign(faces.size(), Vec2(0.5, 0.5));
   }
 
-  Vec3 evaluate(int face, const Vec2& q) const { return B.faces()[face].patch.evaluate(q.x(), q.y()); }
-
   // Where touch x lies: the face and parameters, from the sheet's own parameters `hint`
   // when a face takes x there (most sheets are parameterised by the face they touch).
   // Else Newton on each face whose box holds x, from the hint (clamped to the face), the
@@ -193,43 +191,11 @@ private:
 double footprintArea(const SideProjector& projector, const std::array<Vec3, 3>& x,
   const std::array<OnFace, 3>& corners, int n)
 {
-  // Two corners on one side of one face's square (a sheet's border along a convex edge,
-  // where its radius is 0): the footprint's side is that curve, not the chord.
-  auto alongSide = [&corners](int a, int b) {
-    const OnFace &p = corners[a], &q = corners[b];
-    if (p.face < 0 || p.face != q.face)
-      return false;
-    for (int c = 0; c < 2; ++c)
-      for (double side : { 0.0, 1.0 })
-        if (std::abs(p.q(c) - side) <= 1e-9 && std::abs(q.q(c) - side) <= 1e-9)
-          return true;
-    return false;
-  };
-  const bool along01 = alongSide(0, 1), along02 = alongSide(0, 2), along12 = alongSide(1, 2);
-  auto onSide = [&](int a, int b, double f) {
-    const Vec2 q = corners[a].q + f * (corners[b].q - corners[a].q);
-    return projector.evaluate(corners[a].face, q);
-  };
   std::vector<Vec3> p;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j)
     {
       const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
-      if (j == 0 && along01)
-      {
-        p.push_back(onSide(0, 1, s));
-        continue;
-      }
-      if (i == 0 && along02)
-      {
-        p.push_back(onSide(0, 2, t));
-        continue;
-      }
-      if (i + j == n && along12)
-      {
-        p.push_back(onSide(1, 2, t));
-        continue;
-      }
       const Vec3 y = x[0] + (x[1] - x[0]) * s + (x[2] - x[0]) * t;
       // (The faces come within the nearest corner's distance: the corners are on them.)
       const double reach = std::min({ (y - x[0]).norm(), (y - x[1]).norm(), (y - x[2]).norm() }) +

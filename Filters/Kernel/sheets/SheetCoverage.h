@@ -24,17 +24,17 @@ struct FaceCoverage
 
 /// The footprints of `meshes` on every face. A sheet triangle's footprint on a side is the
 /// triangle of its corners' touches there. On a curved face it is measured on the face, not
-/// as that flat triangle: the triangle is cut into 4 × 4 and its points projected onto the
-/// side's faces (Newton from the corners' touches), and a side whose two corners lie on
-/// one side of a patch (the sheet's border along a curved convex edge) follows that curve.
-/// Flat triangles cut across a curved face — next to a rim, where the touches leave the
-/// osculating point like a square root, they miss 5e-3 of an ellipsoid — and chords of a
-/// curved edge miss its segments (1e-4 of a cylinder's cap). A sheet's triangles at its
+/// as the flat triangle of the three touches: when all three lie on one patch, the area of
+/// the patch over the triangle of their parameters (a 7-point rule of degree 5 on
+/// |S_u × S_v|) — footprints that share corners then tile the patch's parameter square
+/// without gaps, however far the touches are apart (next to a rim they leave the
+/// osculating point like a square root, where flat triangles cut across the face and
+/// miss up to a few % of it). Footprints whose touches lie on different patches, or at a
+/// point where the patch degenerates (a pole), are measured flat. A sheet's triangles at its
 /// apex (a vertex touching a whole circle) count the band between that circle and their
 /// other corners. `footprints` (optional, per face) adds what other elements cover (the
 /// circles of contact of centre curves: centreCurveFootprints). Face areas are integrated
-/// (Gauss–Legendre, 3 × 3 points on 16 × 16 cells of a curved patch). One entry per face or
-/// group.
+/// the same way (Gauss–Legendre on 16 × 16 cells). One entry per face or group.
 std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
   const std::vector<double>& footprints = {});
 
