@@ -16,7 +16,6 @@
 #include "sheets/CentreCurveFootprint.h"
 #include "sheets/RimSheet.h"
 #include "sheets/SheetFit.h"
-#include "sheets/SheetCoverage.h"
 #include "sheets/SheetInterpolation.h"
 #include "sheets/TransitionSheets.h"
 

@@ -2083,4 +2083,71 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   return out;
 }
 
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
+  const std::vector<double>& footprints)
+{
+  const int faces = static_cast<int>(boundary.faces().size());
+  std::vector<int> group(faces);
+  for (int f = 0; f < faces; ++f)
+    group[f] = f;
+  std::vector<double> covered(faces, 0.0);
+  for (const MedialSheetMesh& mesh : meshes)
+    for (int k = 0; k < 2; ++k)
+    {
+      if (mesh.members[k].empty() || mesh.members[k].front() >= faces)
+        continue; // a reflex edge or corner: no area
+      for (int f : mesh.members[k])
+        group[f] = mesh.members[k].front();
+      for (const auto& t : mesh.triangles)
+      {
+        const Vec3& a = mesh.vertices[t[0]].touch[k];
+        const int at = k == 1 && mesh.apex >= 0 ? static_cast<int>(std::find(t.begin(), t.end(), mesh.apex) - t.begin()) : 3;
+        if (at < 3)
+        {
+          // The apex touches a whole circle: the triangle covers the strip between the
+          // circle and its other two corners' touches (b, c), from the circle's points
+          // nearest them.
+          const Vec3& b = mesh.vertices[t[(at + 1) % 3]].touch[1];
+          const Vec3& c = mesh.vertices[t[(at + 2) % 3]].touch[1];
+          auto onCircle = [&](const Vec3& p) {
+            Vec3 d = p - mesh.apexCircleCentre;
+            d -= mesh.apexCircleAxis * mesh.apexCircleAxis.dot(d);
+            return Vec3(mesh.apexCircleCentre + mesh.apexCircleRadius * d.normalized());
+          };
+          const Vec3 pb = onCircle(b), pc = onCircle(c);
+          covered[mesh.members[k].front()] +=
+            0.5 * ((b - pb).cross(c - pb).norm() + (c - pb).cross(pc - pb).norm());
+          continue;
+        }
+        covered[mesh.members[k].front()] +=
+          0.5 * (mesh.vertices[t[1]].touch[k] - a).cross(mesh.vertices[t[2]].touch[k] - a).norm();
+      }
+    }
+  for (int f = 0; f < faces && f < static_cast<int>(footprints.size()); ++f)
+    covered[group[f]] += footprints[f];
+  std::vector<double> area(faces, 0.0);
+  for (int f = 0; f < faces; ++f)
+  {
+    // A fine grid of the patch: exact for planar faces with straight sides (their cells
+    // are planar quadrilaterals), within about 1e-5 for curved ones.
+    const BezierPatch& patch = boundary.faces()[f].patch;
+    const Vec3 c00 = patch.evaluate(0, 0), c10 = patch.evaluate(1, 0), c01 = patch.evaluate(0, 1);
+    const bool flat = patch.degreeU() <= 1 && patch.degreeV() <= 1 &&
+      std::abs((c10 - c00).cross(c01 - c00).normalized().dot(patch.evaluate(1, 1) - c00)) <= 1e-14 * boundary.diagonal();
+    const int n = flat ? 1 : 64;
+    auto at = [&](int i, int j) { return patch.evaluate(static_cast<double>(i) / n, static_cast<double>(j) / n); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+      {
+        const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+        area[group[f]] += 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
+      }
+  }
+  std::vector<FaceCoverage> out;
+  for (int f = 0; f < faces; ++f)
+    if (group[f] == f)
+      out.push_back({ f, area[f], covered[f] });
+  return out;
+}
+
 } // namespace exactmat

@@ -136,4 +136,20 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
 std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
   const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures);
 
+/// Completeness, independent of how the sheets were found: every point of a face has one
+/// maximal ball, so the sheets' touchpoint footprints on a face (or on coplanar faces that
+/// are one side) add up to its area. One entry per face or group of coplanar faces.
+/// `footprints` (optional, per face) adds what other elements cover (the circles of contact
+/// of centre curves: centreCurveFootprints). A sheet's triangles at its apex (a vertex
+/// touching a whole circle) count the band between that circle and their other corners.
+struct FaceCoverage
+{
+  int face = -1;        ///< the face (the group's first)
+  double area = 0.0;    ///< the face's (group's) area
+  double covered = 0.0; ///< the footprints' total
+  double shortfall() const { return area > 0.0 ? std::abs(covered - area) / area : 0.0; }
+};
+std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
+  const std::vector<double>& footprints = {});
+
 } // namespace exactmat
