@@ -23,6 +23,7 @@
 #include "shapes/RandomShapes.h"
 #include "sheets/SheetFit.h"
 #include "sheets/CentreCurveFootprint.h"
+#include "sheets/SheetCoverage.h"
 #include "sheets/SheetInterpolation.h"
 
 #include <Eigen/Geometry>
@@ -620,12 +621,26 @@ ShapeParameters ellipsoidAxes(double width, double height, double length)
 } // namespace
 
 
+void randomEllipsoidTable(int count)
+{
+  std::printf("\n## Random ellipsoids: rim and sheet (random axes, patch layouts, turned, moved, scaled, reweighted)\n\n");
+  std::printf("| solids | complete | faces not covered (> 1e-3) | largest shortfall | points off, poles off the rim | "
+              "points off, poles on the rim (largest) | sheet failed | refused | rim and sheet, total (ms) |\n"
+              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  randomEllipsoidRow(count, 1);
+}
+
 int main(int argc, char** argv)
 {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   if (argc > 1 && std::strcmp(argv[1], "--canal") == 0) // (that table alone)
   {
     randomCanalTable(20);
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--ellipsoids") == 0) // (the random ellipsoids alone)
+  {
+    randomEllipsoidTable(argc > 2 ? std::atoi(argv[2]) : 60);
     return 0;
   }
   const int repeats = quick ? 1 : 5;
@@ -786,11 +801,7 @@ int main(int argc, char** argv)
     fitRow("ellipsoid 4 x 3 x 2", patchPieces(makeShape("ellipsoid", ellipsoidAxes(4, 3, 2)).surfaces), tolerance, repeats);
   }
 
-  std::printf("\n## Random ellipsoids: rim and sheet (random axes, patch layouts, turned, moved, scaled, reweighted)\n\n");
-  std::printf("| solids | complete | faces not covered (> 1e-3) | largest shortfall | points off, poles off the rim | "
-              "points off, poles on the rim (largest) | sheet failed | refused | rim and sheet, total (ms) |\n"
-              "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  randomEllipsoidRow(quick ? 10 : 60, 1);
+  randomEllipsoidTable(quick ? 10 : 60);
   randomCanalTable(quick ? 4 : 20);
 
   const int turns = quick ? 6 : 30;

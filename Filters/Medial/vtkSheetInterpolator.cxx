@@ -16,6 +16,7 @@
 #include "sheets/CentreCurveFootprint.h"
 #include "sheets/RimSheet.h"
 #include "sheets/SheetFit.h"
+#include "sheets/SheetCoverage.h"
 #include "sheets/SheetInterpolation.h"
 #include "sheets/TransitionSheets.h"
 

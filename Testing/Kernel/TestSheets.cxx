@@ -18,6 +18,7 @@
 #include "EllipsoidMAT.h"
 #include "shapes/RandomShapes.h"
 #include "sheets/CentreCurveFootprint.h"
+#include "sheets/SheetCoverage.h"
 #include "sheets/SheetInterpolation.h"
 
 #include <Eigen/Geometry>
@@ -287,7 +288,8 @@ TEST(Sheets, CylinderConesAreTheClosedFormAndTheAxisCoversTheSide)
       const Sheets s = sheetsOf(pieces);
       ASSERT_EQ(s.meshes.size(), 2u) << what;
       // (Every fifth vertex against the exact boundary: the cones have 5000; all of them
-      // are held to the closed form below.)
+      // are held to the closed form below. The caps' area is exact, π R², and the cones'
+      // footprints along each cap's circle follow it, not their chords — which left 1e-4.)
       expectExactSheets(s, what, 1e-4, 5);
       const Normalisation& frame = s.boundary->userFrame();
       double worst = 0.0;

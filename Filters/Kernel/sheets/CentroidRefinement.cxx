@@ -36,7 +36,17 @@ void refineByCentroids(DomainTriangulation& domain, MedialSheetMesh& mesh, const
       const Vec2 w = (a.domain + b.domain + c.domain) / 3.0;
       const Vec3 linear = (a.x + b.x + c.x) / 3.0;
       const double linearRadius = (a.r + b.r + c.r) / 3.0;
-      const double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
+      // The longest edge of the triangle and of its footprints, the triangles of its
+      // corners' touches: next to a rim the touches leave the osculating point like the
+      // square root of the distance to it, and across a thin sheet they swing round the
+      // solid, so a small triangle may touch a large, curved piece of a face — which its
+      // corners' touches then do not describe (the coverage check measures the footprints).
+      // (Not at an apex: its touch is one point of a whole circle.)
+      double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
+      for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 3; ++i)
+          if (t[i] != mesh.apex && t[(i + 1) % 3] != mesh.apex)
+            edge = std::max(edge, (mesh.vertices[t[i]].touch[k] - mesh.vertices[t[(i + 1) % 3]].touch[k]).norm());
       SheetVertex v = ball(w, t);
       v.domain = w;
       const double deviation = std::max((v.x - linear).norm(), std::abs(v.r - linearRadius));

@@ -2,8 +2,9 @@
 /// @file CentroidRefinement.h
 /// @brief A sheet's triangulated parameter domain refined by centroids (DESIGN.md §3,
 /// "Sheets"): a triangle stays when the exact ball at its domain centroid is within the
-/// tolerance of the linear interpolation of its corners (centre and radius) and no edge
-/// is longer than maxEdge; otherwise its centroid becomes a vertex. Rounds until none is
+/// tolerance of the linear interpolation of its corners (centre and radius) and no edge —
+/// of it or of its footprints, the triangles of its corners' touches — is longer than
+/// maxEdge; otherwise its centroid becomes a vertex. Rounds until none is
 /// added (at most 200). The sheets solved over a domain of their own (a rim's plane, a
 /// cap) use it; their solvers differ, the refinement does not.
 

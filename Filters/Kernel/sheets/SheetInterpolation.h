@@ -21,6 +21,7 @@
 #include "mat3d/Generator3D.h"
 #include "mat3d/MAT3D.h"
 #include "medial/SolidBoundary.h"
+#include "sheets/SheetSide.h"
 
 #include <array>
 #include <string>
@@ -93,13 +94,6 @@ struct MedialSheetMesh
   double area() const;
 };
 
-/// One side of a sheet's pair as generator indices (medialGenerators' numbering): g
-/// itself, or every face reached through smooth edges that is in g's plane (a polygon
-/// split into a fan of triangles) or, for a curved face, a piece of g's surface (a surface
-/// of revolution cut where MAT samples touch: PatchContinuation) — one face to the sheets —
-/// sorted.
-std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, int g);
-
 /// Traced sheets (generator pairs) that are one sheet: the same two sides. Groups with no
 /// traced pair follow: faces meeting at a convex edge that no seam lists as a pair.
 struct SheetGroup
@@ -135,21 +129,5 @@ MedialSheetMesh interpolateSheet(const Boundary3D& boundary, const std::vector<G
 /// put in `failures` (its index in the result and the InputError's message).
 std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const MAT3D& mat,
   const SheetOptions& options, std::vector<std::pair<int, std::string>>& failures);
-
-/// Completeness, independent of how the sheets were found: every point of a face has one
-/// maximal ball, so the sheets' touchpoint footprints on a face (or on coplanar faces that
-/// are one side) add up to its area. One entry per face or group of coplanar faces.
-/// `footprints` (optional, per face) adds what other elements cover (the circles of contact
-/// of centre curves: centreCurveFootprints). A sheet's triangles at its apex (a vertex
-/// touching a whole circle) count the band between that circle and their other corners.
-struct FaceCoverage
-{
-  int face = -1;        ///< the face (the group's first)
-  double area = 0.0;    ///< the face's (group's) area
-  double covered = 0.0; ///< the footprints' total
-  double shortfall() const { return area > 0.0 ? std::abs(covered - area) / area : 0.0; }
-};
-std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
-  const std::vector<double>& footprints = {});
 
 } // namespace exactmat
