@@ -261,7 +261,7 @@ TEST(Sheets, EllipsoidSheetIsTheClosedForm)
     EXPECT_NEAR(area / exact, 1.0, 1e-3) << what.str();
     if (c.polar >= 0 && c.polar != shortest)
       continue;
-    expectExactSheets(s, what.str(), 1e-3, 17);
+    expectExactSheets(s, what.str(), 2e-4, 17);
     if (!c.moved && c.semiAxes.maxCoeff() < 4.0 * cc) // (a flat one leaves too few grid points inside)
     {
       EXPECT_GE(ballCoverage(s, 12), 0.999) << what.str();
@@ -369,7 +369,7 @@ TEST(Sheets, PillowSheetsAreCurvedAndExact)
   // Bicubic faces: curved sheets between them, refined to the tolerance.
   // Every 4th vertex against the exact boundary (13,000 bicubic closest-point queries
   // take seconds; the benchmark checks them all).
-  expectExactSheets(sheetsOf(patchPieces(makeShape("pillow").surfaces)), "pillow", 1e-3, 4);
+  expectExactSheets(sheetsOf(patchPieces(makeShape("pillow").surfaces)), "pillow", 2e-5, 4);
 }
 
 TEST(Sheets, PatchSplitSurfacesMeetAlongThePatchBorders)
@@ -389,7 +389,7 @@ TEST(Sheets, PatchSplitSurfacesMeetAlongThePatchBorders)
         pieces.push_back(std::move(q));
       }
   const Sheets split = sheetsOf(pieces);
-  expectExactSheets(split, "pillow, 3 x 3 patches a face", 1e-3, 10);
+  expectExactSheets(split, "pillow, 3 x 3 patches a face", 2e-5, 10);
   const Sheets whole = sheetsOf(patchPieces(makeShape("pillow").surfaces));
   EXPECT_EQ(split.meshes.size(), whole.meshes.size());
   double splitArea = 0.0, wholeArea = 0.0;
@@ -402,7 +402,7 @@ TEST(Sheets, PatchSplitSurfacesMeetAlongThePatchBorders)
 
 TEST(Sheets, BoxWithAFreeFormTop)
 {
-  expectExactSheets(sheetsOf(boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5)), "free-form top", 1e-3);
+  expectExactSheets(sheetsOf(boxWithFreeFormTop(2.0, 1.5, 1.0, 0.3, 0.5)), "free-form top", 2e-5);
 }
 
 TEST(Sheets, ReflexEdgesAndCornersHaveCurvedSheets)
@@ -710,7 +710,10 @@ void expectSweptSheetsAgree(const std::string& profileName, const Sweep& how, co
                            .cross(swept.points[t[2]].x - swept.points[t[0]].x)
                            .norm();
   const Sheets s = sheetsOf(movedPieces(sweptSolidFaces(generators, graph, sweep), placed));
-  expectExactSheets(s, name, 1e-3, 10);
+  // (Faces covered to 1e-4: a planar face's footprints along a reflex arc of its border
+  // follow the arc — their chords reached into the hole it bounds, 1.6e-4 over on the L
+  // revolved 270 degrees.)
+  expectExactSheets(s, name, 1e-4, 10);
   const Normalisation& frame = s.boundary->userFrame();
   double area = 0.0, largest = 0.0;
   for (const MedialSheetMesh& mesh : s.meshes)
@@ -802,7 +805,7 @@ TEST(Sheets, RevolvedStarsFillTheirSheetsBetweenReflexArcs)
     const MedialGraph graph = computeMAT2D(generators);
     const SweepMap sweep(profile, Sweep::revolution(angle, Vec3(-2.0, 0.0, 0.0), Vec3::UnitY()));
     const Sheets s = sheetsOf(sweptSolidFaces(generators, graph, sweep));
-    expectExactSheets(s, std::to_string(points) + "-point star revolved", 1e-3, 10);
+    expectExactSheets(s, std::to_string(points) + "-point star revolved", 2e-4, 10);
   }
 }
 
