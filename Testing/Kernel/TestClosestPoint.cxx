@@ -278,6 +278,41 @@ TEST(ClosestPoint, PatchFindsEverySphereMinimum)
   EXPECT_NEAR(centre[0].distance, 2.0, 1e-13);
 }
 
+// A query at a pole (a collapsed side of the patch: the whole side is one point, at
+// distance 0) has the pole as its one foot. The side is divided out of the stationarity
+// polynomials: their search used to subdivide along it to its box limit (200 000 boxes,
+// ~1 s a query) whatever the reach. Counted in boxes, not seconds.
+TEST(ClosestPoint, AQueryAtAPoleFindsItWithoutSearchingTheCollapsedSide)
+{
+  int poles = 0;
+  for (const NurbsSurface& s : ellipsoidSurfaces(Vec3(2, 1.5, 1), 0.3, 2))
+  {
+    for (const BezierPatchSpan& span : extractBezier(s))
+    {
+      const BezierPatch& p = span.patch;
+      for (int side = 0; side < 4; ++side)
+      {
+        const BezierCurve c = p.side(side);
+        const Vec3 pole = c.evaluate(0.0);
+        if ((c.evaluate(1.0) - pole).norm() > 1e-14 || (c.evaluate(0.5) - pole).norm() > 1e-14)
+          continue;
+        ++poles;
+        for (const double reach : { 1e-8, 1e-3, Unbounded })
+        {
+          const std::uint64_t before = patchSearchWork();
+          const std::vector<PatchFootpoint> feet = patchFootpoints(p, pole, reach);
+          EXPECT_LE(patchSearchWork() - before, 64u) << "pole " << pole.transpose() << ", reach " << reach;
+          ASSERT_FALSE(feet.empty()) << "pole " << pole.transpose();
+          EXPECT_LE(feet.front().distance, 1e-15);
+          EXPECT_LE((p.evaluate(feet.front().u, feet.front().v) - pole).norm(), 1e-15);
+        }
+        EXPECT_LE(closestPoint(p, pole).distance, 1e-15);
+      }
+    }
+  }
+  EXPECT_EQ(poles, 8); // each of the eight patches has one pole
+}
+
 TEST(ClosestPoint, PatchFindsEveryInteriorMinimum)
 {
   // The wavy patch has dips: from above, several interior local minima of the distance.

@@ -869,7 +869,23 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     }
     return result;
   }
-  search.search(pp.gu, pp.gv, 0.0, 1.0, 0.0, 1.0, 0);
+  BernsteinPoly2 gu = pp.gu, gv = pp.gv;
+  // A side along which the query's stationarity holds identically (the query at a pole:
+  // the collapsed side is all at distance 0) is divided out of gu and gv, or the search
+  // subdivides along it to its box limit (~1 s) for the one foot the side searches below
+  // find anyway. Interior stationary points are unchanged.
+  for (auto [g, zero] : { std::pair{ &gu, &search.zeroU }, std::pair{ &gv, &search.zeroV } })
+  {
+    for (int side = 0; side < 4; ++side)
+    {
+      const bool alongU = side % 2 == 1, atOne = side == 1 || side == 2;
+      for (int n = 0; (n = g->divideBySide(alongU, atOne, *zero)) > 0;)
+      {
+        *zero *= n;
+      }
+    }
+  }
+  search.search(gu, gv, 0.0, 1.0, 0.0, 1.0, 0);
   if (boxBudget)
     *boxBudget -= search.boxes;
   result = search.found;

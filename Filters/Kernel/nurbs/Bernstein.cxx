@@ -413,6 +413,37 @@ bool BernsteinPoly2::hasStrictSign(double zero) const
   return allPositive || allNegative;
 }
 
+int BernsteinPoly2::divideBySide(bool alongU, bool atOne, double zero)
+{
+  const int n = alongU ? nu : nv;
+  if (n == 0)
+  {
+    return 0;
+  }
+  const int side = atOne ? n : 0;
+  for (int k = 0; k <= (alongU ? nv : nu); ++k)
+  {
+    if (std::abs(alongU ? at(side, k) : at(k, side)) > zero)
+    {
+      return 0;
+    }
+  }
+  // c_k B_k^n(t) = t · (n / k) c_k B_{k−1}^{n−1}(t) = (1 − t) · (n / (n − k)) c_k B_k^{n−1}(t).
+  BernsteinPoly2 q(alongU ? nu - 1 : nu, alongU ? nv : nv - 1);
+  for (int i = 0; i <= q.nu; ++i)
+  {
+    for (int j = 0; j <= q.nv; ++j)
+    {
+      const int k = alongU ? i : j;
+      const int from = atOne ? k : k + 1;
+      const double factor = atOne ? double(n) / (n - k) : double(n) / (k + 1);
+      q.at(i, j) = factor * (alongU ? at(from, j) : at(i, from));
+    }
+  }
+  *this = std::move(q);
+  return n;
+}
+
 double BernsteinPoly2::maxAbs() const
 {
   double m = 0.0;

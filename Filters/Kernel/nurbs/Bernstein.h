@@ -109,6 +109,12 @@ struct BernsteinPoly2
   /// True when every coefficient is > zero or every one is < −zero: no root in the box.
   bool hasStrictSign(double zero) const;
   double maxAbs() const;
+  /// Divides by the side's factor (u or 1 − u with `alongU`, else v or 1 − v; `atOne`
+  /// picks the side at 1) when every coefficient on that side is within `zero`, the
+  /// polynomial's rounding: its zeros in the open box stay, the side's own drop out (a
+  /// query at a patch's pole makes the whole collapsed side stationary). Returns the
+  /// largest factor a coefficient was multiplied by (the degree), 0 when not divided.
+  int divideBySide(bool alongU, bool atOne, double zero);
 };
 
 BernsteinPoly2 operator*(const BernsteinPoly2& a, const BernsteinPoly2& b);
