@@ -2,6 +2,8 @@
 
 #include "nurbs/Bernstein.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <queue>
 #include <cstdio>
@@ -1126,6 +1128,50 @@ PatchSearchLimit::PatchSearchLimit(int boxes)
 PatchSearchLimit::~PatchSearchLimit()
 {
   BoxLimit = Previous;
+}
+
+std::optional<PatchFootpoint> localFootpoint(const BezierPatch& patch, const Vec3& query, const Vec2& start,
+  double settled)
+{
+  Vec2 q = start;
+  for (int iteration = 0; iteration < 24; ++iteration)
+  {
+    const SurfaceDerivatives d = patch.derivatives(q.x(), q.y());
+    PatchFootpoint f;
+    f.u = q.x();
+    f.v = q.y();
+    f.point = d.point;
+    f.distance = (d.point - query).norm();
+    if (f.distance <= settled)
+      return f; // on the patch (at a collapsed side too, where the parameters are not unique)
+    Eigen::Matrix<double, 3, 2> J;
+    J << d.su, d.sv;
+    const Eigen::Matrix2d normal = J.transpose() * J;
+    if (!(normal.determinant() > 1e-12 * normal.squaredNorm()))
+      return std::nullopt; // a pole or a collapsed side: no unique parameters here
+    const Vec2 next = (q + normal.ldlt().solve(-J.transpose() * (d.point - query))).cwiseMax(0.0).cwiseMin(1.0);
+    // (Settled when the step is within the rounding on the patch too: far from the origin
+    // that is more than 1e-12 of the size, and across a sliver piece 1e-4 wide a parameter
+    // step that small is never reached.)
+    const bool converged = (next - q).norm() <= 1e-12 || (J * (next - q)).norm() <= settled;
+    q = next;
+    if (!converged)
+      continue;
+    // Kept in the square, it may have settled on a side the foot lies beyond: then the
+    // distance still falls outwards (S − P is not normal to the patch there).
+    const SurfaceDerivatives e = patch.derivatives(q.x(), q.y());
+    const Vec3 r = e.point - query;
+    const double tangential = std::hypot(r.dot(e.su) / e.su.norm(), r.dot(e.sv) / e.sv.norm());
+    if (!(tangential <= 1e-6 * r.norm() + settled))
+      return std::nullopt;
+    f.u = q.x();
+    f.v = q.y();
+    f.point = e.point;
+    f.distance = r.norm();
+    f.onBoundary = q.minCoeff() == 0.0 || q.maxCoeff() == 1.0;
+    return f;
+  }
+  return std::nullopt;
 }
 
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)
