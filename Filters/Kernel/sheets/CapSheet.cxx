@@ -53,6 +53,8 @@ public:
     , Size(boundary.diagonal())
     , Settled(std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal())
   {
+    for (const auto& face : B.faces())
+      FaceBoxes.push_back(face.patch.boundingBox());
     if (!Options.exact)
     {
       Own = std::make_unique<PatchBoundary>(B);
@@ -70,6 +72,7 @@ private:
   }
   int faceThrough(const Vec3& p, bool planar) const;
   double canalDistance(const Vec3& x, CanalFoot& foot, bool local) const;
+  bool emptyBall(const Vec3& x, double radius) const;
   bool solve(const Vec2& w, double guess, const CanalFoot* seed, CapBall& ball) const;
   std::vector<Vec2> border();
 
@@ -84,6 +87,7 @@ private:
   std::vector<int> CapSide;  // the cap's faces (coplanar pieces)
   std::vector<int> Canal;    // the faces the end's circle lies on
   std::vector<Box3> CanalBoxes;
+  std::vector<Box3> FaceBoxes; // every face's
   Vec3List BorderPoints;     // the border loop's points (radius 0)
 };
 
@@ -142,6 +146,21 @@ double CapSheetBuilder::canalDistance(const Vec3& x, CanalFoot& foot, bool local
     }
   }
   return best;
+}
+
+// Whether no face comes within `radius` of x: a decision, each face's box first, curved
+// faces by the signs of their Bernstein coefficients (patchComesWithin) — cheaper than the
+// distance, whose search near the axis meets a circle of minima on the canal face.
+bool CapSheetBuilder::emptyBall(const Vec3& x, double radius) const
+{
+  for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+  {
+    if (distanceToBox(FaceBoxes[f], x) >= radius)
+      continue;
+    if (G[f].planar() ? G[f].distance(x) < radius : patchComesWithin(B.faces()[f].patch, x, radius))
+      return false;
+  }
+  return true;
 }
 
 // The ball touching the cap at w whose distance from the canal face is its radius: the
@@ -350,7 +369,7 @@ MedialSheetMesh CapSheetBuilder::run()
     // anything nearer is a part of the MAT this sheet does not model — or, solved from a
     // neighbour's foot, a nearer foot of the canal face itself: then solved again from the
     // global search.
-    auto empty = [&](const CapBall& s) { return Options.exact->distance(s.x) >= s.r * (1.0 - 1e-7) - 1e-12 * Size; };
+    auto empty = [&](const CapBall& s) { return emptyBall(s.x, s.r * (1.0 - 1e-7) - 1e-12 * Size); };
     CapBall s;
     bool solved = solve(w, (a.r + b.r + c.r) / 3.0, seed, s);
     if (seed && !(solved && empty(s)))
