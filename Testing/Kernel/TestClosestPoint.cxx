@@ -239,6 +239,44 @@ TEST(ClosestPoint, TangentDiskEmptinessMatchesBruteForce)
   EXPECT_TRUE(curveComesWithin(quarterEllipse, v.point + 0.55 * inward, 0.55 * (1 - 1e-9), tau0));
 }
 
+// The same for balls tangent to patches (the 3D tracer's and the cone sheets' balls)
+// against the global distance: balls below the surface's curvature radii stay outside;
+// larger ones, or ones the patch comes back into, are entered. Round the touch h has a near
+// double root: boxes there are decided by convexity, not subdivided towards 2^-24 — counted
+// in boxes (plain subdivision took ~110 a ball here).
+TEST(ClosestPoint, TangentBallEmptinessMatchesTheDistance)
+{
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> at(0.02, 0.98), radius(0.02, 3.0);
+  std::vector<BezierPatch> patches{ wavyPatch() };
+  for (const BezierPatchSpan& span : extractBezier(ellipsoidSurfaces(Vec3(2, 1.5, 1), 0.3, 2).front()))
+    patches.push_back(span.patch);
+  int inside = 0, outside = 0;
+  std::uint64_t work = 0;
+  for (const BezierPatch& p : patches)
+  {
+    for (int trial = 0; trial < 60; ++trial)
+    {
+      const Vec2 t(at(rng), at(rng));
+      const double r = radius(rng);
+      const Vec3 x = p.evaluate(t.x(), t.y()) + (trial % 2 ? r : -r) * p.normal(t.x(), t.y());
+      const double test = r * (1.0 - 1e-7); // the cone sheets' balls keep a margin of this order
+      const double nearest = closestPoint(p, x).distance;
+      if (std::abs(nearest - test) <= 1e-11 * r)
+        continue; // too close to call
+      const bool expected = nearest < test;
+      (expected ? inside : outside)++;
+      const std::uint64_t before = patchSearchWork();
+      EXPECT_EQ(patchComesWithin(p, x, test), expected) << "touch " << t.transpose() << " r " << r;
+      if (!expected)
+        work += patchSearchWork() - before;
+    }
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_GT(outside, 20);
+  EXPECT_LE(work, 40u * outside) << "boxes for " << outside << " empty balls";
+}
+
 TEST(ClosestPoint, PatchGlobalMinimumMatchesBruteForce)
 {
   const BezierPatch p = wavyPatch();

@@ -2,6 +2,8 @@
 
 #include "nurbs/Bernstein.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <queue>
 #include <cstdio>
@@ -1081,29 +1083,77 @@ std::vector<PatchFootpoint> patchFootpoints(
 namespace
 {
 // h = |A − P·w|² − r²·w² on a sub-box of the patch: negative somewhere? The coefficients
-// bound h; corners and the centre are values of h; split in u and v in turn until the
-// sign is decided or the box is 2^-24 of the patch, where the patch lies within
-// rounding of the sphere: that counts as not inside.
-bool negativeSomewhere2(const BernsteinPoly2& h, int depthU, int depthV)
+// bound h; corners and the centre are values of h; below the first levels, convexity
+// decides (byConvexity); else split in u and v in turn until the sign is decided or the
+// box is 2^-24 of the patch, where the patch lies within rounding of the sphere: that
+// counts as not inside.
+struct ComesWithin
 {
-  ++Work;
-  const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
-  (void)mx;
-  if (*mn >= 0.0)
-    return false;
-  if (h.at(0, 0) < 0.0 || h.at(h.nu, 0) < 0.0 || h.at(0, h.nv) < 0.0 || h.at(h.nu, h.nv) < 0.0)
-    return true;
-  if (h(0.5, 0.5) < 0.0)
-    return true;
-  const bool splitU = depthU <= depthV;
-  if ((splitU ? depthU : depthV) >= 24)
-    return false;
-  // Both halves in one de Casteljau pass per row (or column).
-  BernsteinPoly2 a, b;
-  h.split(0.5, splitU, a, b);
-  const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
-  return negativeSomewhere2(a, du, dv) || negativeSomewhere2(b, du, dv);
-}
+  // The sign of h on the box decided by convexity: where the Bernstein bounds of its
+  // Hessian prove it positive definite over the (convex) box, h lies above its tangent
+  // plane at any point X of it, h(Y) ≥ h(X) + ∇h(X)·(Y − X); X is the box's minimiser
+  // approached by projected Newton from the box's centre, so that plane's
+  // least value over the box is close to h's. 1: h ≥ 0 on the box, −1: h(X) < 0, 0: not
+  // decided (not convex here: split).
+  int byConvexity(const BernsteinPoly2& h, Vec2 x) const
+  {
+    if (h.nu < 1 || h.nv < 1)
+      return 0;
+    const BernsteinPoly2 hu = h.derivativeU(), hv = h.derivativeV();
+    const BernsteinPoly2 huu = hu.derivativeU(), huv = hu.derivativeV(), hvv = hv.derivativeV();
+    const Interval a = bounds(huu), b = bounds(huv), c = bounds(hvv);
+    const double bMax = std::max(std::abs(b.lo), std::abs(b.hi));
+    if (!(a.lo > 0.0 && c.lo > 0.0 && a.lo * c.lo > bMax * bMax))
+      return 0;
+    for (int it = 0; it < 6; ++it)
+    {
+      const double gu = hu(x.x(), x.y()), gv = hv(x.x(), x.y());
+      const double auu = huu(x.x(), x.y()), auv = huv(x.x(), x.y()), avv = hvv(x.x(), x.y());
+      const double det = auu * avv - auv * auv;
+      const Vec2 next = (x - Vec2(avv * gu - auv * gv, auu * gv - auv * gu) / det).cwiseMax(0.0).cwiseMin(1.0);
+      if (!next.allFinite())
+        break;
+      const bool settled = (next - x).lpNorm<Eigen::Infinity>() <= 1e-12;
+      x = next;
+      if (settled)
+        break;
+    }
+    const double value = h(x.x(), x.y());
+    if (value < 0.0)
+      return -1;
+    const double gu = hu(x.x(), x.y()), gv = hv(x.x(), x.y());
+    const double least = value + std::min(-gu * x.x(), gu * (1.0 - x.x())) + std::min(-gv * x.y(), gv * (1.0 - x.y()));
+    return least >= 0.0 ? 1 : 0;
+  }
+
+  bool negativeSomewhere(const BernsteinPoly2& h, int depthU, int depthV) const
+  {
+    ++Work;
+    const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
+    (void)mx;
+    if (*mn >= 0.0)
+      return false;
+    if (h.at(0, 0) < 0.0 || h.at(h.nu, 0) < 0.0 || h.at(0, h.nv) < 0.0 || h.at(h.nu, h.nv) < 0.0)
+      return true;
+    if (h(0.5, 0.5) < 0.0)
+      return true;
+    // (Not on the first levels: a box that large is rarely convex, and the Hessian's
+    // bounds cost a split's work.)
+    if (depthU + depthV >= 2)
+    {
+      if (const int sign = byConvexity(h, Vec2(0.5, 0.5)); sign != 0)
+        return sign < 0;
+    }
+    const bool splitU = depthU <= depthV;
+    if ((splitU ? depthU : depthV) >= 24)
+      return false;
+    // Both halves in one de Casteljau pass per row (or column).
+    BernsteinPoly2 a, b;
+    h.split(0.5, splitU, a, b);
+    const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
+    return negativeSomewhere(a, du, dv) || negativeSomewhere(b, du, dv);
+  }
+};
 } // namespace
 
 bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius)
@@ -1125,7 +1175,7 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
     }
   }
   const BernsteinPoly2 h = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - (radius * radius) * (w * w);
-  return negativeSomewhere2(h, 0, 0);
+  return ComesWithin{}.negativeSomewhere(h, 0, 0);
 }
 
 std::uint64_t patchSearchWork()
@@ -1142,6 +1192,50 @@ PatchSearchLimit::PatchSearchLimit(int boxes)
 PatchSearchLimit::~PatchSearchLimit()
 {
   BoxLimit = Previous;
+}
+
+std::optional<PatchFootpoint> localFootpoint(const BezierPatch& patch, const Vec3& query, const Vec2& start,
+  double settled)
+{
+  Vec2 q = start;
+  for (int iteration = 0; iteration < 24; ++iteration)
+  {
+    const SurfaceDerivatives d = patch.derivatives(q.x(), q.y());
+    PatchFootpoint f;
+    f.u = q.x();
+    f.v = q.y();
+    f.point = d.point;
+    f.distance = (d.point - query).norm();
+    if (f.distance <= settled)
+      return f; // on the patch (at a collapsed side too, where the parameters are not unique)
+    Eigen::Matrix<double, 3, 2> J;
+    J << d.su, d.sv;
+    const Eigen::Matrix2d normal = J.transpose() * J;
+    if (!(normal.determinant() > 1e-12 * normal.squaredNorm()))
+      return std::nullopt; // a pole or a collapsed side: no unique parameters here
+    const Vec2 next = (q + normal.ldlt().solve(-J.transpose() * (d.point - query))).cwiseMax(0.0).cwiseMin(1.0);
+    // (Settled when the step is within the rounding on the patch too: far from the origin
+    // that is more than 1e-12 of the size, and across a sliver piece 1e-4 wide a parameter
+    // step that small is never reached.)
+    const bool converged = (next - q).norm() <= 1e-12 || (J * (next - q)).norm() <= settled;
+    q = next;
+    if (!converged)
+      continue;
+    // Kept in the square, it may have settled on a side the foot lies beyond: then the
+    // distance still falls outwards (S − P is not normal to the patch there).
+    const SurfaceDerivatives e = patch.derivatives(q.x(), q.y());
+    const Vec3 r = e.point - query;
+    const double tangential = std::hypot(r.dot(e.su) / e.su.norm(), r.dot(e.sv) / e.sv.norm());
+    if (!(tangential <= 1e-6 * r.norm() + settled))
+      return std::nullopt;
+    f.u = q.x();
+    f.v = q.y();
+    f.point = e.point;
+    f.distance = r.norm();
+    f.onBoundary = q.minCoeff() == 0.0 || q.maxCoeff() == 1.0;
+    return f;
+  }
+  return std::nullopt;
 }
 
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query)

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace exactmat
@@ -75,11 +76,24 @@ std::vector<PatchFootpoint> patchFootpoints(
 /// The global closest point of the patch.
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query);
 
+/// A foot of the query on the patch found locally: Gauss–Newton on S(u, v) − P ⊥ S_u, S_v
+/// from `start`, kept in the square (at most 24 steps). The foot when it settles (a step
+/// within `settled`, a length — the input's rounding — or the query on the patch within it)
+/// with S − P normal to the patch (a minimum on a side of the square the distance still
+/// falls beyond is none); nothing at a pole or where it does not settle. A neighbour's foot
+/// as the start makes it a few steps; the global search (closestPoint) stays the judge.
+std::optional<PatchFootpoint> localFootpoint(const BezierPatch& patch, const Vec3& query, const Vec2& start,
+  double settled);
+
 /// True when some point of the patch lies strictly closer than `radius` to the query: the
 /// sign of h(u,v) = |A − P·w|² − radius²·w² (degree 2p × 2q) decided by its Bernstein
 /// coefficients, with subdivision where they do not decide (to 2^-24 of the patch: closer
 /// than that the patch is within rounding of the sphere, which counts as not closer).
-/// The ball-emptiness test of the 3D tracer.
+/// Round a tangency (a ball touching the patch: h has a near double root there, and no
+/// box's coefficients are all ≥ 0 however small) a box is decided by convexity instead:
+/// where the Bernstein bounds of h's Hessian prove it positive definite, h lies above its
+/// tangent plane at the box's minimiser. The ball-emptiness test of the 3D tracer and the
+/// cone sheets.
 bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius);
 
 /// Euclidean distance from a point to an axis-aligned box (0 inside): a lower bound for

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace exactmat
@@ -27,8 +28,17 @@ struct CapBall
 {
   Vec2 w = Vec2::Zero();
   Vec3 x = Vec3::Zero(), touch = Vec3::Zero(), foot = Vec3::Zero();
+  Vec2 qFoot = Vec2::Zero();
   double r = 0.0;
   int face = -1;
+};
+
+// Where a ball touches the canal face: the face, its parameters there, the point.
+struct CanalFoot
+{
+  int face = -1;
+  Vec2 q = Vec2::Zero();
+  Vec3 point = Vec3::Zero();
 };
 
 class CapSheetBuilder
@@ -41,7 +51,10 @@ public:
     , End(end)
     , Options(options)
     , Size(boundary.diagonal())
+    , Settled(std::max(1e-13, 64.0 * boundary.userFrame().inputRounding()) * boundary.diagonal())
   {
+    for (const auto& face : B.faces())
+      FaceBoxes.push_back(face.patch.boundingBox());
     if (!Options.exact)
     {
       Own = std::make_unique<PatchBoundary>(B);
@@ -58,8 +71,9 @@ private:
       (Cap >= 0 ? " (cap " + G[Cap].name() + ")" : "");
   }
   int faceThrough(const Vec3& p, bool planar) const;
-  double canalDistance(const Vec3& x, int& face, Vec3& foot) const;
-  bool solve(const Vec2& w, double guess, CapBall& ball) const;
+  double canalDistance(const Vec3& x, CanalFoot& foot, bool local) const;
+  bool emptyBall(const Vec3& x, double radius) const;
+  bool solve(const Vec2& w, double guess, const CanalFoot* seed, CapBall& ball) const;
   std::vector<Vec2> border();
 
   const Boundary3D& B;
@@ -68,10 +82,12 @@ private:
   SheetOptions Options;
   double Size;
   std::unique_ptr<PatchBoundary> Own;
+  double Settled; ///< a Newton step on a face this short has converged (the input's rounding)
   int Cap = -1;
   std::vector<int> CapSide;  // the cap's faces (coplanar pieces)
   std::vector<int> Canal;    // the faces the end's circle lies on
   std::vector<Box3> CanalBoxes;
+  std::vector<Box3> FaceBoxes; // every face's
   Vec3List BorderPoints;     // the border loop's points (radius 0)
 };
 
@@ -90,44 +106,84 @@ int CapSheetBuilder::faceThrough(const Vec3& p, bool planar) const
   return best;
 }
 
-// The distance from x to the canal face (the nearest of its pieces) and where.
-double CapSheetBuilder::canalDistance(const Vec3& x, int& face, Vec3& foot) const
+// The distance from x to the canal face (the nearest of its pieces) and where. `local`:
+// from `foot` as it is (a neighbour's foot, or the last step's), Newton on its face when it
+// settles inside that face's square (a foot on its border may have a nearer one across it);
+// else the global search on every piece.
+double CapSheetBuilder::canalDistance(const Vec3& x, CanalFoot& foot, bool local) const
 {
+  if (local && foot.face >= 0 && !G[foot.face].planar())
+    if (const std::optional<PatchFootpoint> f = localFootpoint(B.faces()[foot.face].patch, x, foot.q, Settled);
+        f && !f->onBoundary)
+    {
+      foot.q = Vec2(f->u, f->v);
+      foot.point = f->point;
+      return f->distance;
+    }
   double best = INFINITY;
   for (size_t k = 0; k < Canal.size(); ++k)
   {
     const int f = Canal[k];
     if (distanceToBox(CanalBoxes[k], x) >= best)
       continue;
-    const Vec3 p = G[f].nearestPoint(x);
-    if (const double d = (p - x).norm(); d < best)
+    CanalFoot here;
+    here.face = f;
+    if (G[f].planar())
+    {
+      here.point = G[f].nearestPoint(x);
+      here.q = G[f].parameterOf(here.point);
+    }
+    else
+    {
+      const PatchFootpoint p = closestPoint(B.faces()[G[f].entity()].patch, x);
+      here.point = p.point;
+      here.q = Vec2(p.u, p.v);
+    }
+    if (const double d = (here.point - x).norm(); d < best)
     {
       best = d;
-      face = f;
-      foot = p;
+      foot = here;
     }
   }
   return best;
 }
 
+// Whether no face comes within `radius` of x: a decision, each face's box first, curved
+// faces by the signs of their Bernstein coefficients (patchComesWithin) — cheaper than the
+// distance, whose search near the axis meets a circle of minima on the canal face.
+bool CapSheetBuilder::emptyBall(const Vec3& x, double radius) const
+{
+  for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+  {
+    if (distanceToBox(FaceBoxes[f], x) >= radius)
+      continue;
+    if (G[f].planar() ? G[f].distance(x) < radius : patchComesWithin(B.faces()[f].patch, x, radius))
+      return false;
+  }
+  return true;
+}
+
 // The ball touching the cap at w whose distance from the canal face is its radius: the
 // root of d(S + r·N) − r, which does not increase with r (d is 1-Lipschitz): bracketed
-// from 0, then Newton kept inside the bracket.
-bool CapSheetBuilder::solve(const Vec2& w, double guess, CapBall& ball) const
+// from 0, then Newton kept inside the bracket. With a `seed` (a neighbour's foot) the
+// canal's distance is followed locally (canalDistance); the caller checks the ball empty,
+// which a foot that is not the nearest fails.
+bool CapSheetBuilder::solve(const Vec2& w, double guess, const CanalFoot* seed, CapBall& ball) const
 {
   const Touch3D t = G[Cap].evaluate(w);
   ball.w = w;
   ball.touch = t.point;
-  auto value = [&](double r, int& face, Vec3& foot) { return canalDistance(t.point + r * t.normal, face, foot) - r; };
+  CanalFoot foot;
+  if (seed)
+    foot = *seed;
+  auto value = [&](double r) { return canalDistance(t.point + r * t.normal, foot, seed != nullptr) - r; };
   // Newton from the guess (the neighbours' radius: two or three steps), kept inside the
   // bracket found on the way; doubling while no upper end is known.
-  int face = -1;
-  Vec3 foot = Vec3::Zero();
   double lo = 0.0, hi = INFINITY;
   double r = guess > 0.0 ? guess : 1e-6 * Size;
   for (int it = 0; it < 200; ++it)
   {
-    const double f = value(r, face, foot);
+    const double f = value(r);
     if (!std::isfinite(f))
       return false;
     if (std::abs(f) <= 1e-15 * Size)
@@ -135,7 +191,7 @@ bool CapSheetBuilder::solve(const Vec2& w, double guess, CapBall& ball) const
     (f > 0.0 ? lo : hi) = r;
     if (hi - lo <= 1e-15 * Size)
       break;
-    const double slope = (t.point + r * t.normal - foot).normalized().dot(t.normal) - 1.0;
+    const double slope = (t.point + r * t.normal - foot.point).normalized().dot(t.normal) - 1.0;
     double next = slope < -1e-12 ? r - f / slope : NAN;
     if (!(next > lo && next < hi))
       next = std::isinf(hi) ? 2.0 * r : 0.5 * (lo + hi);
@@ -143,9 +199,10 @@ bool CapSheetBuilder::solve(const Vec2& w, double guess, CapBall& ball) const
   }
   ball.r = r;
   ball.x = t.point + r * t.normal;
-  ball.face = face;
-  ball.foot = foot;
-  return std::isfinite(r) && face >= 0;
+  ball.face = foot.face;
+  ball.foot = foot.point;
+  ball.qFoot = foot.q;
+  return std::isfinite(r) && foot.face >= 0;
 }
 
 // The cap's border loop in its plane coordinates: the sides of its faces that are convex
@@ -297,26 +354,41 @@ MedialSheetMesh CapSheetBuilder::run()
   mesh.apexCircleCentre = middle;
   mesh.apexCircleAxis = (circle[16] - circle[0]).cross(circle[32] - circle[0]).normalized();
   mesh.apexCircleRadius = (circle[0] - middle).norm();
+  // Each vertex's canal foot (the border's and the apex's: none), to start its
+  // neighbours' from.
+  std::vector<CanalFoot> feet(mesh.vertices.size());
+  CanalFoot last;
   auto ball = [&](const Vec2& w, const std::array<int, 3>& t) {
     const SheetVertex &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
     const Vec3 linear = (a.x + b.x + c.x) / 3.0;
+    const CanalFoot* seed = nullptr;
+    for (int k : t)
+      if (!seed && feet[k].face >= 0)
+        seed = &feet[k];
+    // Empty of the whole boundary (the canal face and the cap touch it by construction):
+    // anything nearer is a part of the MAT this sheet does not model — or, solved from a
+    // neighbour's foot, a nearer foot of the canal face itself: then solved again from the
+    // global search.
+    auto empty = [&](const CapBall& s) { return emptyBall(s.x, s.r * (1.0 - 1e-7) - 1e-12 * Size); };
     CapBall s;
-    if (!solve(w, (a.r + b.r + c.r) / 3.0, s))
+    bool solved = solve(w, (a.r + b.r + c.r) / 3.0, seed, s);
+    if (seed && !(solved && empty(s)))
+      solved = solve(w, (a.r + b.r + c.r) / 3.0, nullptr, s);
+    if (!solved)
       fail("3D MAT sheets: ", where(), ": no ball touches the cap and the canal face over ",
         format(B.userPoint(linear)));
-    // Empty of the whole boundary (the canal face and the cap touch it by construction):
-    // anything nearer is a part of the MAT this sheet does not model.
-    if (Options.exact->distance(s.x) < s.r * (1.0 - 1e-7) - 1e-12 * Size)
+    if (!empty(s))
       fail("3D MAT sheets: ", where(), ": its ball at ", format(B.userPoint(s.x)),
         " reaches another face (a seam crosses the cap's sheet: not supported yet)");
     SheetVertex v;
     v.x = s.x;
     v.r = s.r;
-    v.q = { { w, G[s.face].parameterOf(s.foot) } };
+    v.q = { { w, s.qFoot } };
     v.touch = { { s.touch, s.foot } };
+    last = { s.face, s.qFoot, s.foot };
     return v;
   };
-  refineByCentroids(*domain, mesh, Options, Size, ball, []() {}, where());
+  refineByCentroids(*domain, mesh, Options, Size, ball, [&]() { feet.push_back(last); }, where());
   mesh.members = { { CapSide, Canal } };
   mesh.generators = { { CapSide.front(), Canal.front() } };
   mesh.parameterisedBy = 0;

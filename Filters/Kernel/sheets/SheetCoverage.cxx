@@ -139,48 +139,15 @@ public:
   }
 
 private:
-  // Newton (Gauss–Newton on S(u, v) − y ⊥ S_u, S_v, kept in the face's square) on one face
-  // from `start`: the foot when it settles on the face with S − y normal to it, else
-  // nothing.
+  // The foot of y on one face by Newton from `start` (localFootpoint), or nothing.
   std::optional<Vec3> newton(const Vec3& y, const OnFace& start, Vec2* at = nullptr) const
   {
-    const BezierPatch& patch = B.faces()[start.face].patch;
-    Vec2 q = start.q;
-    for (int iteration = 0; iteration < 24; ++iteration)
-    {
-      const SurfaceDerivatives d = patch.derivatives(q.x(), q.y());
-      if ((d.point - y).norm() <= Settled)
-      {
-        // On the face (at a collapsed side too, where the parameters are not unique).
-        if (at)
-          *at = q;
-        return d.point;
-      }
-      Eigen::Matrix<double, 3, 2> J;
-      J << d.su, d.sv;
-      const Eigen::Matrix2d normal = J.transpose() * J;
-      if (!(normal.determinant() > 1e-12 * normal.squaredNorm()))
-        return std::nullopt; // a pole or a collapsed side: no unique parameters here
-      const Vec2 next = (q + normal.ldlt().solve(-J.transpose() * (d.point - y))).cwiseMax(0.0).cwiseMin(1.0);
-      // (Settled when the step is within the input's rounding on the face: far from the
-      // origin that is more than 1e-12 of the size, and across a sliver piece 1e-4 wide a
-      // parameter step that small is never reached.)
-      const bool settled = (next - q).norm() <= 1e-12 || (J * (next - q)).norm() <= Settled;
-      q = next;
-      if (!settled)
-        continue;
-      // Kept in the square, it may have settled on a side the foot lies beyond: then the
-      // distance still falls outwards (S − y is not normal to the face there).
-      const SurfaceDerivatives e = patch.derivatives(q.x(), q.y());
-      const Vec3 r = e.point - y;
-      const double tangential = std::hypot(r.dot(e.su) / e.su.norm(), r.dot(e.sv) / e.sv.norm());
-      if (!(tangential <= 1e-6 * r.norm() + 1e-12 * B.diagonal()))
-        return std::nullopt;
-      if (at)
-        *at = q;
-      return e.point;
-    }
-    return std::nullopt;
+    const std::optional<PatchFootpoint> f = localFootpoint(B.faces()[start.face].patch, y, start.q, Settled);
+    if (!f)
+      return std::nullopt;
+    if (at)
+      *at = Vec2(f->u, f->v);
+    return f->point;
   }
 
   std::optional<OnFace> nearest(const Vec3& y, double reach) const
