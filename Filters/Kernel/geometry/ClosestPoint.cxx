@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <queue>
 #include <cstdio>
 #include <cstdlib>
@@ -1082,6 +1083,59 @@ std::vector<PatchFootpoint> patchFootpoints(
 
 namespace
 {
+// The Bernstein basis of degree n at t with its first and second derivatives (n ≤ 64).
+void bernsteinJet(int n, double t, double* b, double* d1, double* d2)
+{
+  double lower2[65] = { 0.0 }, lower1[65] = { 0.0 };
+  b[0] = 1.0;
+  for (int k = 1; k <= n; ++k)
+  {
+    if (k == n - 1)
+      std::copy(b, b + k, lower2);
+    if (k == n)
+      std::copy(b, b + k, lower1);
+    b[k] = t * b[k - 1];
+    for (int j = k - 1; j > 0; --j)
+      b[j] = (1.0 - t) * b[j] + t * b[j - 1];
+    b[0] *= 1.0 - t;
+  }
+  if (n == 1)
+    lower2[0] = 0.0;
+  for (int i = 0; i <= n; ++i)
+  {
+    auto at = [](const double* c, int k, int size) { return k >= 0 && k < size ? c[k] : 0.0; };
+    d1[i] = n * (at(lower1, i - 1, n) - at(lower1, i, n));
+    d2[i] = n * (n - 1.0) * (at(lower2, i - 2, n - 1) - 2.0 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1));
+  }
+}
+
+// h, h_u, h_v, h_uu, h_uv, h_vv at (u, v), in one pass over the coefficients.
+std::array<double, 6> jetAt(const BernsteinPoly2& h, double u, double v)
+{
+  double bu[65], du[65], ddu[65], bv[65], dv[65], ddv[65];
+  bernsteinJet(h.nu, u, bu, du, ddu);
+  bernsteinJet(h.nv, v, bv, dv, ddv);
+  std::array<double, 6> jet{};
+  for (int i = 0; i <= h.nu; ++i)
+  {
+    double r0 = 0.0, r1 = 0.0, r2 = 0.0;
+    for (int j = 0; j <= h.nv; ++j)
+    {
+      const double c = h.at(i, j);
+      r0 += c * bv[j];
+      r1 += c * dv[j];
+      r2 += c * ddv[j];
+    }
+    jet[0] += bu[i] * r0;
+    jet[1] += du[i] * r0;
+    jet[2] += bu[i] * r1;
+    jet[3] += ddu[i] * r0;
+    jet[4] += du[i] * r1;
+    jet[5] += bu[i] * r2;
+  }
+  return jet;
+}
+
 // h = |A − P·w|² − r²·w² on a sub-box of the patch: negative somewhere? The coefficients
 // bound h; corners and the centre are values of h; below the first levels, convexity
 // decides (byConvexity); else split in u and v in turn until the sign is decided or the
@@ -1097,33 +1151,50 @@ struct ComesWithin
   // decided (not convex here: split).
   int byConvexity(const BernsteinPoly2& h, Vec2 x) const
   {
-    if (h.nu < 1 || h.nv < 1)
+    // The Hessian's bounds from second differences of the coefficients (h_uu's Bernstein
+    // coefficients are nu(nu − 1)·Δ²_u c, h_uv's nu·nv·Δ_u Δ_v c), refused at the first
+    // that fails: along a circle of tangency, as on a torus, h is flat in one direction
+    // and never convex, and this test runs on every box there.
+    const int nu = h.nu, nv = h.nv;
+    double aLo = INFINITY, cLo = INFINITY, bMax = 0.0;
+    if (nu >= 2)
+      for (int i = 0; i + 2 <= nu; ++i)
+        for (int j = 0; j <= nv; ++j)
+          if (!((aLo = std::min(aLo, h.at(i + 2, j) - 2.0 * h.at(i + 1, j) + h.at(i, j))) > 0.0))
+            return 0;
+    if (nv >= 2)
+      for (int i = 0; i <= nu; ++i)
+        for (int j = 0; j + 2 <= nv; ++j)
+          if (!((cLo = std::min(cLo, h.at(i, j + 2) - 2.0 * h.at(i, j + 1) + h.at(i, j))) > 0.0))
+            return 0;
+    if (nu < 2 || nv < 2)
       return 0;
-    const BernsteinPoly2 hu = h.derivativeU(), hv = h.derivativeV();
-    const BernsteinPoly2 huu = hu.derivativeU(), huv = hu.derivativeV(), hvv = hv.derivativeV();
-    const Interval a = bounds(huu), b = bounds(huv), c = bounds(hvv);
-    const double bMax = std::max(std::abs(b.lo), std::abs(b.hi));
-    if (!(a.lo > 0.0 && c.lo > 0.0 && a.lo * c.lo > bMax * bMax))
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < nv; ++j)
+        bMax = std::max(bMax, std::abs(h.at(i + 1, j + 1) - h.at(i + 1, j) - h.at(i, j + 1) + h.at(i, j)));
+    aLo *= nu * (nu - 1.0);
+    cLo *= nv * (nv - 1.0);
+    bMax *= double(nu) * nv;
+    if (!(aLo * cLo > bMax * bMax))
       return 0;
-    for (int it = 0; it < 6; ++it)
+    if (nu > 64 || nv > 64)
+      return 0;
+    // Newton towards the box's minimiser, kept in the box; the bound checked at each step.
+    for (int it = 0; it < 4; ++it)
     {
-      const double gu = hu(x.x(), x.y()), gv = hv(x.x(), x.y());
-      const double auu = huu(x.x(), x.y()), auv = huv(x.x(), x.y()), avv = hvv(x.x(), x.y());
-      const double det = auu * avv - auv * auv;
-      const Vec2 next = (x - Vec2(avv * gu - auv * gv, auu * gv - auv * gu) / det).cwiseMax(0.0).cwiseMin(1.0);
-      if (!next.allFinite())
-        break;
-      const bool settled = (next - x).lpNorm<Eigen::Infinity>() <= 1e-12;
+      const std::array<double, 6> j = jetAt(h, x.x(), x.y());
+      if (j[0] < 0.0)
+        return -1;
+      const double least = j[0] + std::min(-j[1] * x.x(), j[1] * (1.0 - x.x())) + std::min(-j[2] * x.y(), j[2] * (1.0 - x.y()));
+      if (least >= 0.0)
+        return 1;
+      const double det = j[3] * j[5] - j[4] * j[4];
+      const Vec2 next = (x - Vec2(j[5] * j[1] - j[4] * j[2], j[3] * j[2] - j[4] * j[1]) / det).cwiseMax(0.0).cwiseMin(1.0);
+      if (!next.allFinite() || (next - x).lpNorm<Eigen::Infinity>() <= 1e-12)
+        return 0;
       x = next;
-      if (settled)
-        break;
     }
-    const double value = h(x.x(), x.y());
-    if (value < 0.0)
-      return -1;
-    const double gu = hu(x.x(), x.y()), gv = hv(x.x(), x.y());
-    const double least = value + std::min(-gu * x.x(), gu * (1.0 - x.x())) + std::min(-gv * x.y(), gv * (1.0 - x.y()));
-    return least >= 0.0 ? 1 : 0;
+    return 0;
   }
 
   bool negativeSomewhere(const BernsteinPoly2& h, int depthU, int depthV) const
