@@ -270,12 +270,6 @@ struct FootprintCorners
   bool planar = false; ///< the side is planar: a point off its border is its own foot
   double near = 0.0;   ///< a length the rounding stays within
   bool otherPlanar = false; ///< the other side is planar too: the edge between them is straight
-  /// The sheet's other side where it is curved and its q valid: a convex edge is both
-  /// sides' border, so two corners on it follow it there too (a planar face's arc is always
-  /// the border of a curved face: two planes meet in a line).
-  const SheetSide* other = nullptr;
-  std::array<Vec2, 3> otherQ;
-  std::array<bool, 3> otherValid{ { false, false, false } };
   std::function<OnFace(int)> located; ///< corner → where it lies (computed once per vertex)
 };
 
@@ -286,11 +280,11 @@ struct FootprintCorners
 // face exactly (one evaluation per point, no search). On a planar side a point is its own
 // foot, except along an arc of the face's border (two corners of the sheet's border on one
 // side of a patch: a convex edge, or a reflex arc the sheet turns at): that arc, from the
-// other side's parameters (the curved face across a convex edge) or from the corners' patch
-// parameters — chords of a reflex arc reach into the hole it bounds. Else it is the flat point projected onto the faces (Newton from the corners'
-// faces). Footprints that share corners share the points of their common side (each depends
-// only on that side's corners), so they tile the face as the flat triangles tile the
-// polyhedron of touches.
+// corners' patch parameters (chords of a reflex arc reach into the hole it bounds). Else it
+// is the flat point projected onto the faces (Newton from the corners' faces). Footprints
+// that share corners share the points of their common side (each depends only on that
+// side's corners), so they tile the face as the flat triangles tile the polyhedron of
+// touches.
 double footprintArea(const SheetSide* side, const SideProjector& projector, const FootprintCorners& c, int n)
 {
   std::array<std::optional<OnFace>, 3> where;
@@ -343,16 +337,6 @@ double footprintArea(const SheetSide* side, const SideProjector& projector, cons
       }
       const int a = w[0] == 0.0 ? 1 : 0, b = w[2] == 0.0 ? 1 : 2; // a side's corners
       const bool onSide = w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0;
-      if (c.planar && onSide && c.onEdge[a] && c.onEdge[b] && c.other && c.otherValid[a] && c.otherValid[b])
-      {
-        // (In this side's plane only when a and b are on one border of the other side:
-        // two corners on two convex edges have a chord across it instead.)
-        const Vec3 y = c.other->point(w[a] * c.otherQ[a] + w[b] * c.otherQ[b]);
-        const Vec3 normal = (c.x[1] - c.x[0]).cross(c.x[2] - c.x[0]);
-        const bool inPlane = normal.norm() > 0.0 && std::abs(normal.normalized().dot(y - c.x[0])) <= c.near;
-        p.push_back(inPlane ? y : Vec3(w[a] * c.x[a] + w[b] * c.x[b]));
-        continue;
-      }
       if (onSide && c.border[a] && c.border[b] && !(c.otherPlanar && c.onEdge[a] && c.onEdge[b]) && alongSide(a, b))
       {
         const OnFace& from = corner(a);
@@ -413,7 +397,6 @@ std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::v
       const bool planar = std::all_of(members.begin(), members.end(), [&](int f) { return generators[f].planar(); });
       SideProjector projector(boundary, members);
       const SideParameters& here = parameters[k];
-      const SideParameters& there = parameters[1 - k];
       std::vector<std::optional<OnFace>> located(curved ? mesh.vertices.size() : 0);
       auto locate = [&](int v) -> OnFace {
         if (!located[v])
@@ -445,8 +428,6 @@ std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::v
           c.x[a] = mesh.vertices[t[a]].touch[k];
           c.q[a] = mesh.vertices[t[a]].q[k];
           c.valid[a] = here.valid(t[a]);
-          c.otherQ[a] = mesh.vertices[t[a]].q[1 - k];
-          c.otherValid[a] = there.valid(t[a]);
           c.onEdge[a] = mesh.vertices[t[a]].convexEdge || mesh.vertices[t[a]].r <= near;
           c.border[a] = c.onEdge[a] || mesh.vertices[t[a]].border;
         }
@@ -460,7 +441,6 @@ std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::v
           covered[members.front()] += 0.5 * (c.x[1] - c.x[0]).cross(c.x[2] - c.x[0]).norm();
           continue;
         }
-        c.other = there.side;
         c.located = [&locate, &t](int a) { return locate(t[a]); };
         covered[members.front()] += footprintArea(here.side, projector, c, FootprintCuts);
       }
