@@ -33,6 +33,9 @@ constexpr int MaxPatchDepth = 24;
 // From this depth on, a box whose Newton limit is a degenerate minimum is not split further.
 constexpr int DegenerateCheckDepth = 8;
 constexpr int MaxPatchBoxes = 200000;
+// Cuts across a pole's collapsed side (PatchSearch): SplitAt^48 ≈ 1e-15 of the parameter
+// range, where the box is the pole to rounding.
+constexpr int MaxPoleCuts = 48;
 // Split a little off the middle: symmetric shapes put roots exactly at t = 1/2.
 constexpr double SplitAt = 0.4871;
 
@@ -757,6 +760,8 @@ struct PatchSearch
   std::vector<PatchFootpoint> found;
   int boxes = 0;
   int limit = MaxPatchBoxes;
+  /// Collapsed sides (0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0), each one point: a pole.
+  std::array<bool, 4> collapsed{ { false, false, false, false } };
 
   void add(double u, double v)
   {
@@ -772,7 +777,7 @@ struct PatchSearch
   }
 
   void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, double u0, double u1,
-    double v0, double v1, int depth)
+    double v0, double v1, int depth, int poleCuts = 0)
   {
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
@@ -785,6 +790,16 @@ struct PatchSearch
     if (std::isfinite(maxDistance) &&
       distanceToBox(patch.subPatch(u0, u1, v0, v1).boundingBox(), q) > maxDistance)
     {
+      return;
+    }
+    // Next to a pole, below the polynomials' rounding (a query 1e-12 from the pole): the
+    // box is stationary to rounding in one direction at least, and Newton from its middle
+    // stands for it (subdividing it would only follow the rounding).
+    if (poleCuts > 0 && (gu.maxAbs() <= 4.0 * zeroU || gv.maxAbs() <= 4.0 * zeroV))
+    {
+      double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
+      if (newtonPatch(patch, q, u, v, u0, u1, v0, v1, nullptr, true))
+        add(u, v);
       return;
     }
     // Interval Jacobian of (gu, gv): if its determinant cannot vanish, the box holds at most
@@ -817,14 +832,43 @@ struct PatchSearch
         return;
       }
     }
+    // A box on a pole's collapsed side is split across the side only: in the pole's
+    // parameters (angle × distance from it) a query beside the pole leaves both
+    // polynomials small along the whole side, and quartering would multiply the boxes
+    // along it at every level down to the query's distance from the pole (the box limit).
+    // Cut across, each level adds one box on the side and one ring beyond it; such cuts
+    // do not count as depth (a query 1e-12 from the pole needs 40 of them: the foot's
+    // distance from the side in the parameters), their number is bounded on its own.
+    const bool acrossV = (collapsed[0] && v0 == 0.0) || (collapsed[2] && v1 == 1.0);
+    const bool acrossU = (collapsed[3] && u0 == 0.0) || (collapsed[1] && u1 == 1.0);
+    if (poleCuts >= MaxPoleCuts)
+      return; // within rounding of the pole: its side's own search has it
+    if (acrossV != acrossU)
+    {
+      BernsteinPoly2 lu, hu, lv, hv;
+      const double m = acrossU ? u0 + SplitAt * (u1 - u0) : v0 + SplitAt * (v1 - v0);
+      gu.split(SplitAt, acrossU, lu, hu);
+      gv.split(SplitAt, acrossU, lv, hv);
+      if (acrossU)
+      {
+        search(lu, lv, u0, m, v0, v1, depth, poleCuts + 1);
+        search(hu, hv, m, u1, v0, v1, depth, poleCuts + 1);
+      }
+      else
+      {
+        search(lu, lv, u0, u1, v0, m, depth, poleCuts + 1);
+        search(hu, hv, u0, u1, m, v1, depth, poleCuts + 1);
+      }
+      return;
+    }
     const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
     BernsteinPoly2 pu[4], pv[4];
     gu.quarter(SplitAt, SplitAt, pu);
     gv.quarter(SplitAt, SplitAt, pv);
-    search(pu[0], pv[0], u0, um, v0, vm, depth + 1);
-    search(pu[1], pv[1], um, u1, v0, vm, depth + 1);
-    search(pu[2], pv[2], u0, um, vm, v1, depth + 1);
-    search(pu[3], pv[3], um, u1, vm, v1, depth + 1);
+    search(pu[0], pv[0], u0, um, v0, vm, depth + 1, poleCuts);
+    search(pu[1], pv[1], um, u1, v0, vm, depth + 1, poleCuts);
+    search(pu[2], pv[2], u0, um, vm, v1, depth + 1, poleCuts);
+    search(pu[3], pv[3], um, u1, vm, v1, depth + 1, poleCuts);
   }
 };
 
@@ -873,6 +917,16 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     return result;
   }
   BernsteinPoly2 gu = pp.gu, gv = pp.gv;
+  const double size = patch.boundingBox().diagonal().norm();
+  for (int side = 0; side < 4; ++side)
+  {
+    const BezierCurve c = patch.side(side);
+    const Vec3 first = c.controlPoint(0);
+    bool one = true;
+    for (int k = 1; k <= c.degree() && one; ++k)
+      one = (c.controlPoint(k) - first).norm() <= 1e-14 * size;
+    search.collapsed[side] = one;
+  }
   // A side along which the query's stationarity holds identically (the query at a pole:
   // the collapsed side is all at distance 0) is divided out of gu and gv, or the search
   // subdivides along it to its box limit (~1 s) for the one foot the side searches below
