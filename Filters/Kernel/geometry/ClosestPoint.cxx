@@ -917,14 +917,18 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     return result;
   }
   BernsteinPoly2 gu = pp.gu, gv = pp.gv;
+  // (The control points of a side all one point: a pole. Sides 0 … 3 are v = 0, u = 1,
+  // v = 1, u = 0.)
   const double size = patch.boundingBox().diagonal().norm();
   for (int side = 0; side < 4; ++side)
   {
-    const BezierCurve c = patch.side(side);
-    const Vec3 first = c.controlPoint(0);
+    const bool alongU = side % 2 == 0;
+    const int fixed = side == 1 ? patch.degreeU() : side == 2 ? patch.degreeV() : 0;
+    auto point = [&](int k) { return alongU ? patch.controlPoint(k, fixed) : patch.controlPoint(fixed, k); };
+    const Vec3 first = point(0);
     bool one = true;
-    for (int k = 1; k <= c.degree() && one; ++k)
-      one = (c.controlPoint(k) - first).norm() <= 1e-14 * size;
+    for (int k = 1; k <= (alongU ? patch.degreeU() : patch.degreeV()) && one; ++k)
+      one = (point(k) - first).norm() <= 1e-14 * size;
     search.collapsed[side] = one;
   }
   // A side along which the query's stationarity holds identically (the query at a pole:
