@@ -36,6 +36,7 @@ constexpr int MaxPatchBoxes = 200000;
 // Cuts across a pole's collapsed side (PatchSearch): SplitAt^48 ≈ 1e-15 of the parameter
 // range, where the box is the pole to rounding.
 constexpr int MaxPoleCuts = 48;
+constexpr int NearPoleCuts = 30; // SplitAt^30 ≈ 4e-10
 // Split a little off the middle: symmetric shapes put roots exactly at t = 1/2.
 constexpr double SplitAt = 0.4871;
 
@@ -792,10 +793,13 @@ struct PatchSearch
     {
       return;
     }
-    // Next to a pole, below the polynomials' rounding (a query 1e-12 from the pole): the
-    // box is stationary to rounding in one direction at least, and Newton from its middle
-    // stands for it (subdividing it would only follow the rounding).
-    if (poleCuts > 0 && (gu.maxAbs() <= 4.0 * zeroU || gv.maxAbs() <= 4.0 * zeroV))
+    // Within 1e-9 of a pole in the parameters (30 cuts across its side), below the
+    // polynomials' rounding (a query 1e-12 from the pole): the box is stationary to
+    // rounding in one direction at least, and Newton from its middle stands for it
+    // (subdividing it would only follow the rounding). Not farther out: an osculating
+    // ball's touch is flat to fourth order, and a point merely stationary to rounding
+    // there is 1e-9 too far.
+    if (poleCuts >= NearPoleCuts && (gu.maxAbs() <= 4.0 * zeroU || gv.maxAbs() <= 4.0 * zeroV))
     {
       double u = 0.5 * (u0 + u1), v = 0.5 * (v0 + v1);
       if (newtonPatch(patch, q, u, v, u0, u1, v0, v1, nullptr, true))
