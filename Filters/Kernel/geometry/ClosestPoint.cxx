@@ -763,6 +763,8 @@ struct PatchSearch
   int limit = MaxPatchBoxes;
   /// Collapsed sides (0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0), each one point: a pole.
   std::array<bool, 4> collapsed{ { false, false, false, false } };
+  std::array<Vec3, 4> pole;  ///< each collapsed side's point
+  double size = 0.0;         ///< the patch's bounding box diagonal
 
   void add(double u, double v)
   {
@@ -843,8 +845,14 @@ struct PatchSearch
     // Cut across, each level adds one box on the side and one ring beyond it; such cuts
     // do not count as depth (a query 1e-12 from the pole needs 40 of them: the foot's
     // distance from the side in the parameters), their number is bounded on its own.
-    const bool acrossV = (collapsed[0] && v0 == 0.0) || (collapsed[2] && v1 == 1.0);
-    const bool acrossU = (collapsed[3] && u0 == 0.0) || (collapsed[1] && u1 == 1.0);
+    // Only while the query is within the box's reach of the pole: farther, the pole's
+    // neighbourhood is an ordinary corner of the search, which quartering prunes in a few
+    // boxes (the sign of (S − P)·S_v settles once the box spans little angle), while cuts
+    // across the side, never narrowing the angle, would go on to the pole.
+    const double extentV = (v1 - v0) * size, extentU = (u1 - u0) * size;
+    auto near = [&](int side, double extent) { return collapsed[side] && (q - pole[side]).norm() < 4.0 * extent; };
+    const bool acrossV = (v0 == 0.0 && near(0, extentV)) || (v1 == 1.0 && near(2, extentV));
+    const bool acrossU = (u0 == 0.0 && near(3, extentU)) || (u1 == 1.0 && near(1, extentU));
     if (poleCuts >= MaxPoleCuts)
       return; // within rounding of the pole: its side's own search has it
     if (acrossV != acrossU)
@@ -924,6 +932,7 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
   // (The control points of a side all one point: a pole. Sides 0 … 3 are v = 0, u = 1,
   // v = 1, u = 0.)
   const double size = patch.boundingBox().diagonal().norm();
+  search.size = size;
   for (int side = 0; side < 4; ++side)
   {
     const bool alongU = side % 2 == 0;
@@ -934,6 +943,7 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     for (int k = 1; k <= (alongU ? patch.degreeU() : patch.degreeV()) && one; ++k)
       one = (point(k) - first).norm() <= 1e-14 * size;
     search.collapsed[side] = one;
+    search.pole[side] = first;
   }
   // A side along which the query's stationarity holds identically (the query at a pole:
   // the collapsed side is all at distance 0) is divided out of gu and gv, or the search
