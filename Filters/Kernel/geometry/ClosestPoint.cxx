@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
+#include <memory>
 #include <queue>
 #include <cstdio>
 #include <cstdlib>
@@ -619,10 +621,12 @@ struct Interval
   double lo, hi;
 };
 
-Interval bounds(const BernsteinPoly2& p)
+// Bounds of p's derivative along u or v (its Bernstein coefficients' range).
+Interval derivativeBounds(const BernsteinPoly2& p, bool alongU)
 {
-  const auto [mn, mx] = std::minmax_element(p.c.begin(), p.c.end());
-  return { *mn, *mx };
+  Interval i;
+  p.derivativeBounds(alongU, i.lo, i.hi);
+  return i;
 }
 
 Interval mul(Interval a, Interval b)
@@ -752,8 +756,57 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
 thread_local std::uint64_t Work = 0;
 thread_local int BoxLimit = MaxPatchBoxes;
 
+// The polynomials of one recursion level of a subdivision search: a box's four quarters
+// (or two halves) of each polynomial it splits.
+struct ScratchLevel
+{
+  BernsteinPoly2 u[4], v[4];
+};
+
+// Scratch levels reused by every search on this thread, so that boxes allocate nothing
+// once the levels have grown (a search allocated a dozen polynomials per box; under ASan
+// recording each allocation's stack was 81% of the ellipsoid rim test's 700 s). A search
+// leases a set for its lifetime; a search started inside another (none today) leases the
+// next set.
+class ScratchLease
+{
+public:
+  ScratchLease()
+  {
+    if (InUse == Sets.size())
+      Sets.push_back(std::make_unique<std::deque<ScratchLevel>>());
+    Set = Sets[InUse++].get();
+  }
+  ~ScratchLease() { --InUse; }
+  ScratchLease(const ScratchLease&) = delete;
+  ScratchLease& operator=(const ScratchLease&) = delete;
+  /// Level `l`'s polynomials (a deque: growing it keeps the other levels in place).
+  ScratchLevel& at(int l)
+  {
+    while (Set->size() <= static_cast<size_t>(l))
+      Set->emplace_back();
+    return (*Set)[l];
+  }
+
+private:
+  std::deque<ScratchLevel>* Set;
+  static thread_local std::vector<std::unique_ptr<std::deque<ScratchLevel>>> Sets;
+  static thread_local size_t InUse;
+};
+thread_local std::vector<std::unique_ptr<std::deque<ScratchLevel>>> ScratchLease::Sets;
+thread_local size_t ScratchLease::InUse = 0;
+
 struct PatchSearch
 {
+  PatchSearch(const BezierPatch& patch_, const Vec3& q_, double maxDistance_, double zeroU_, double zeroV_, int limit_)
+    : patch(patch_)
+    , q(q_)
+    , maxDistance(maxDistance_)
+    , zeroU(zeroU_)
+    , zeroV(zeroV_)
+    , limit(limit_)
+  {
+  }
   const BezierPatch& patch;
   const Vec3& q;
   double maxDistance;
@@ -765,6 +818,7 @@ struct PatchSearch
   std::array<bool, 4> collapsed{ { false, false, false, false } };
   std::array<Vec3, 4> pole;  ///< each collapsed side's point
   double size = 0.0;         ///< the patch's bounding box diagonal
+  ScratchLease scratch;
 
   void add(double u, double v)
   {
@@ -791,7 +845,7 @@ struct PatchSearch
       return;
     }
     if (std::isfinite(maxDistance) &&
-      distanceToBox(patch.subPatch(u0, u1, v0, v1).boundingBox(), q) > maxDistance)
+      distanceToBox(patch.subPatchBox(u0, u1, v0, v1), q) > maxDistance)
     {
       return;
     }
@@ -810,8 +864,8 @@ struct PatchSearch
     }
     // Interval Jacobian of (gu, gv): if its determinant cannot vanish, the box holds at most
     // one stationary point and Newton from the centre is tried (row-wise mean value theorem).
-    const Interval a = bounds(gu.derivativeU()), b = bounds(gu.derivativeV());
-    const Interval c = bounds(gv.derivativeU()), d = bounds(gv.derivativeV());
+    const Interval a = derivativeBounds(gu, true), b = derivativeBounds(gu, false);
+    const Interval c = derivativeBounds(gv, true), d = derivativeBounds(gv, false);
     const Interval ad = mul(a, d), bc = mul(b, c);
     const bool unique = (ad.lo - bc.hi > 0.0) || (ad.hi - bc.lo < 0.0);
     if (unique || depth >= MaxPatchDepth || depth >= DegenerateCheckDepth)
@@ -855,9 +909,12 @@ struct PatchSearch
     const bool acrossU = (u0 == 0.0 && near(3, extentU)) || (u1 == 1.0 && near(1, extentU));
     if (poleCuts >= MaxPoleCuts)
       return; // within rounding of the pole: its side's own search has it
+    // The children's polynomials live in this level's scratch: the search goes depth
+    // first, so a level's parts are free again once their boxes are done.
+    ScratchLevel& parts = scratch.at(depth + poleCuts);
     if (acrossV != acrossU)
     {
-      BernsteinPoly2 lu, hu, lv, hv;
+      BernsteinPoly2 &lu = parts.u[0], &hu = parts.u[1], &lv = parts.v[0], &hv = parts.v[1];
       const double m = acrossU ? u0 + SplitAt * (u1 - u0) : v0 + SplitAt * (v1 - v0);
       gu.split(SplitAt, acrossU, lu, hu);
       gv.split(SplitAt, acrossU, lv, hv);
@@ -874,7 +931,8 @@ struct PatchSearch
       return;
     }
     const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
-    BernsteinPoly2 pu[4], pv[4];
+    BernsteinPoly2(&pu)[4] = parts.u;
+    BernsteinPoly2(&pv)[4] = parts.v;
     gu.quarter(SplitAt, SplitAt, pu);
     gv.quarter(SplitAt, SplitAt, pv);
     search(pu[0], pv[0], u0, um, v0, vm, depth + 1, poleCuts);
@@ -897,8 +955,8 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     return result;
   }
   const PatchPolys pp = patchPolys(patch, query);
-  PatchSearch search{ patch, query, maxDistance, pp.zeroU, pp.zeroV, {}, 0,
-    boxBudget ? std::max(1, std::min(*boxBudget, BoxLimit)) : BoxLimit };
+  PatchSearch search(patch, query, maxDistance, pp.zeroU, pp.zeroV,
+    boxBudget ? std::max(1, std::min(*boxBudget, BoxLimit)) : BoxLimit);
   const bool flatU = pp.gu.maxAbs() <= pp.zeroU, flatV = pp.gv.maxAbs() <= pp.zeroV;
   if (flatU && flatV)
   {
@@ -1155,59 +1213,6 @@ std::vector<PatchFootpoint> patchFootpoints(
 
 namespace
 {
-// The Bernstein basis of degree n at t with its first and second derivatives (n ≤ 64).
-void bernsteinJet(int n, double t, double* b, double* d1, double* d2)
-{
-  double lower2[65] = { 0.0 }, lower1[65] = { 0.0 };
-  b[0] = 1.0;
-  for (int k = 1; k <= n; ++k)
-  {
-    if (k == n - 1)
-      std::copy(b, b + k, lower2);
-    if (k == n)
-      std::copy(b, b + k, lower1);
-    b[k] = t * b[k - 1];
-    for (int j = k - 1; j > 0; --j)
-      b[j] = (1.0 - t) * b[j] + t * b[j - 1];
-    b[0] *= 1.0 - t;
-  }
-  if (n == 1)
-    lower2[0] = 0.0;
-  for (int i = 0; i <= n; ++i)
-  {
-    auto at = [](const double* c, int k, int size) { return k >= 0 && k < size ? c[k] : 0.0; };
-    d1[i] = n * (at(lower1, i - 1, n) - at(lower1, i, n));
-    d2[i] = n * (n - 1.0) * (at(lower2, i - 2, n - 1) - 2.0 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1));
-  }
-}
-
-// h, h_u, h_v, h_uu, h_uv, h_vv at (u, v), in one pass over the coefficients.
-std::array<double, 6> jetAt(const BernsteinPoly2& h, double u, double v)
-{
-  double bu[65], du[65], ddu[65], bv[65], dv[65], ddv[65];
-  bernsteinJet(h.nu, u, bu, du, ddu);
-  bernsteinJet(h.nv, v, bv, dv, ddv);
-  std::array<double, 6> jet{};
-  for (int i = 0; i <= h.nu; ++i)
-  {
-    double r0 = 0.0, r1 = 0.0, r2 = 0.0;
-    for (int j = 0; j <= h.nv; ++j)
-    {
-      const double c = h.at(i, j);
-      r0 += c * bv[j];
-      r1 += c * dv[j];
-      r2 += c * ddv[j];
-    }
-    jet[0] += bu[i] * r0;
-    jet[1] += du[i] * r0;
-    jet[2] += bu[i] * r1;
-    jet[3] += ddu[i] * r0;
-    jet[4] += du[i] * r1;
-    jet[5] += bu[i] * r2;
-  }
-  return jet;
-}
-
 // h = |A − P·w|² − r²·w² on a sub-box of the patch: negative somewhere? The coefficients
 // bound h; corners and the centre are values of h; below the first levels, convexity
 // decides (byConvexity); else split in u and v in turn until the sign is decided or the
@@ -1215,13 +1220,15 @@ std::array<double, 6> jetAt(const BernsteinPoly2& h, double u, double v)
 // counts as not inside.
 struct ComesWithin
 {
+  ScratchLease scratch;
+
   // The sign of h on the box decided by convexity: where the Bernstein bounds of its
   // Hessian prove it positive definite over the (convex) box, h lies above its tangent
   // plane at any point X of it, h(Y) ≥ h(X) + ∇h(X)·(Y − X); X is the box's minimiser
   // approached by projected Newton from the box's centre, so that plane's
   // least value over the box is close to h's. 1: h ≥ 0 on the box, −1: h(X) < 0, 0: not
   // decided (not convex here: split).
-  int byConvexity(const BernsteinPoly2& h, Vec2 x) const
+  int byConvexity(const BernsteinPoly2& h, Vec2 x)
   {
     // The Hessian's bounds from second differences of the coefficients (h_uu's Bernstein
     // coefficients are nu(nu − 1)·Δ²_u c, h_uv's nu·nv·Δ_u Δ_v c), refused at the first
@@ -1254,7 +1261,7 @@ struct ComesWithin
     // Newton towards the box's minimiser, kept in the box; the bound checked at each step.
     for (int it = 0; it < 4; ++it)
     {
-      const std::array<double, 6> j = jetAt(h, x.x(), x.y());
+      const std::array<double, 6> j = h.jet(x.x(), x.y());
       if (j[0] < 0.0)
         return -1;
       const double least = j[0] + std::min(-j[1] * x.x(), j[1] * (1.0 - x.x())) + std::min(-j[2] * x.y(), j[2] * (1.0 - x.y()));
@@ -1269,7 +1276,7 @@ struct ComesWithin
     return 0;
   }
 
-  bool negativeSomewhere(const BernsteinPoly2& h, int depthU, int depthV) const
+  bool negativeSomewhere(const BernsteinPoly2& h, int depthU, int depthV)
   {
     ++Work;
     const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
@@ -1290,8 +1297,9 @@ struct ComesWithin
     const bool splitU = depthU <= depthV;
     if ((splitU ? depthU : depthV) >= 24)
       return false;
-    // Both halves in one de Casteljau pass per row (or column).
-    BernsteinPoly2 a, b;
+    // Both halves in one de Casteljau pass per row (or column), into this level's scratch.
+    ScratchLevel& level = scratch.at(depthU + depthV);
+    BernsteinPoly2 &a = level.u[0], &b = level.u[1];
     h.split(0.5, splitU, a, b);
     const int du = depthU + (splitU ? 1 : 0), dv = depthV + (splitU ? 0 : 1);
     return negativeSomewhere(a, du, dv) || negativeSomewhere(b, du, dv);

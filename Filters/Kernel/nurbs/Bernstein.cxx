@@ -1,6 +1,7 @@
 #include "Bernstein.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace exactmat
 {
@@ -373,8 +374,8 @@ BernsteinPoly2 BernsteinPoly2::restrictedTo(double u0, double u1, double v0, dou
 void BernsteinPoly2::split(double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper) const
 {
   const BernsteinPoly2& a = *this;
-  lower = BernsteinPoly2(a.nu, a.nv);
-  upper = BernsteinPoly2(a.nu, a.nv);
+  lower.reshape(a.nu, a.nv);
+  upper.reshape(a.nu, a.nv);
   const int n = alongU ? a.nu : a.nv, lines = alongU ? a.nv + 1 : a.nu + 1;
   auto at = [&](int line, int k) { return alongU ? k * (a.nv + 1) + line : line * (a.nv + 1) + k; };
   BernsteinPoly coefficients, l, r;
@@ -396,10 +397,88 @@ void BernsteinPoly2::quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) c
 {
   // restrictedTo(0, s) keeps the left part of split(s) and restrictedTo(s, 1) the right
   // part of split(s / 1): one split gives both, operation for operation.
-  BernsteinPoly2 lowerU, upperU;
+  // Per-thread halves: the search quarters a box at every level, and allocating them
+  // each time was most of its cost under a sanitizer.
+  thread_local BernsteinPoly2 lowerU, upperU;
   split(su, true, lowerU, upperU);
   lowerU.split(sv, false, parts[0], parts[2]);
   upperU.split(sv, false, parts[1], parts[3]);
+}
+
+void BernsteinPoly2::derivativeBounds(bool alongU, double& lo, double& hi) const
+{
+  const int n = alongU ? nu : nv;
+  lo = hi = 0.0;
+  if (n == 0)
+    return;
+  lo = INFINITY;
+  hi = -INFINITY;
+  for (int i = 0; i + (alongU ? 1 : 0) <= nu; ++i)
+  {
+    for (int j = 0; j + (alongU ? 0 : 1) <= nv; ++j)
+    {
+      const double d = n * (alongU ? at(i + 1, j) - at(i, j) : at(i, j + 1) - at(i, j));
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+  }
+}
+
+namespace
+{
+// The Bernstein basis of degree n ≤ 64 at t with its first and second derivatives.
+void bernsteinJet(int n, double t, double* b, double* d1, double* d2)
+{
+  double lower2[65] = { 0.0 }, lower1[65] = { 0.0 };
+  b[0] = 1.0;
+  for (int k = 1; k <= n; ++k)
+  {
+    if (k == n - 1)
+      std::copy(b, b + k, lower2);
+    if (k == n)
+      std::copy(b, b + k, lower1);
+    b[k] = t * b[k - 1];
+    for (int j = k - 1; j > 0; --j)
+      b[j] = (1.0 - t) * b[j] + t * b[j - 1];
+    b[0] *= 1.0 - t;
+  }
+  if (n == 1)
+    lower2[0] = 0.0;
+  for (int i = 0; i <= n; ++i)
+  {
+    auto at = [](const double* c, int k, int size) { return k >= 0 && k < size ? c[k] : 0.0; };
+    d1[i] = n * (at(lower1, i - 1, n) - at(lower1, i, n));
+    d2[i] = n * (n - 1.0) * (at(lower2, i - 2, n - 1) - 2.0 * at(lower2, i - 1, n - 1) + at(lower2, i, n - 1));
+  }
+}
+} // namespace
+
+std::array<double, 6> BernsteinPoly2::jet(double u, double v) const
+{
+  if (nu > 64 || nv > 64)
+    throw std::length_error("BernsteinPoly2::jet: degree beyond 64");
+  double bu[65], du[65], ddu[65], bv[65], dv[65], ddv[65];
+  bernsteinJet(nu, u, bu, du, ddu);
+  bernsteinJet(nv, v, bv, dv, ddv);
+  std::array<double, 6> jet{};
+  for (int i = 0; i <= nu; ++i)
+  {
+    double r0 = 0.0, r1 = 0.0, r2 = 0.0;
+    for (int j = 0; j <= nv; ++j)
+    {
+      const double cij = at(i, j);
+      r0 += cij * bv[j];
+      r1 += cij * dv[j];
+      r2 += cij * ddv[j];
+    }
+    jet[0] += bu[i] * r0;
+    jet[1] += du[i] * r0;
+    jet[2] += bu[i] * r1;
+    jet[3] += ddu[i] * r0;
+    jet[4] += du[i] * r1;
+    jet[5] += bu[i] * r2;
+  }
+  return jet;
 }
 
 bool BernsteinPoly2::hasStrictSign(double zero) const

@@ -10,6 +10,7 @@
 
 #include "common/InlineVector.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -92,9 +93,20 @@ struct BernsteinPoly2
     , c((nu_ + 1) * (nv_ + 1), 0.0)
   {
   }
+  /// Degrees (nu_, nv_) with coefficients to be written next: the storage is kept, so a
+  /// polynomial reused box after box (the subdivision searches' scratch) allocates once.
+  void reshape(int nu_, int nv_)
+  {
+    nu = nu_;
+    nv = nv_;
+    c.resize((nu_ + 1) * (nv_ + 1));
+  }
   double& at(int i, int j) { return c[i * (nv + 1) + j]; }
   double at(int i, int j) const { return c[i * (nv + 1) + j]; }
   double operator()(double u, double v) const;
+  /// h, h_u, h_v, h_uu, h_uv, h_vv at (u, v) in one pass over the coefficients (degrees
+  /// ≤ 64; no allocation): the convexity tests' Newton steps.
+  std::array<double, 6> jet(double u, double v) const;
   BernsteinPoly2 derivativeU() const;
   BernsteinPoly2 derivativeV() const;
   BernsteinPoly2 elevatedTo(int mu, int mv) const;
@@ -104,7 +116,11 @@ struct BernsteinPoly2
   /// both): [u0 v0, u1 v0, u0 v1, u1 v1] with u0 = [0, su], u1 = [su, 1]. One split per
   /// column and two per row instead of four of each: the subdivision search's step.
   void quarter(double su, double sv, BernsteinPoly2 (&parts)[4]) const;
+  /// The least and largest Bernstein coefficient of derivativeU() (alongU) or
+  /// derivativeV(), bit-identical to theirs, without building it: bounds of the derivative.
+  void derivativeBounds(bool alongU, double& lo, double& hi) const;
   /// The parts [0, t] and [t, 1] in u (alongU) or in v: one split per column or row.
+  /// `lower` and `upper` keep their storage (neither may be *this).
   void split(double t, bool alongU, BernsteinPoly2& lower, BernsteinPoly2& upper) const;
   /// True when every coefficient is > zero or every one is < −zero: no root in the box.
   bool hasStrictSign(double zero) const;

@@ -168,6 +168,60 @@ BezierPatch BezierPatch::subPatch(double u0, double u1, double v0, double v1) co
   return BezierPatch(P, Q, std::move(net));
 }
 
+namespace
+{
+// restrict()'s arithmetic on one line of `count` points with stride `step`, in place:
+// BezierCurve::segment's two de Casteljau splits, operation for operation.
+void segmentInPlace(Vec4* line, int count, std::ptrdiff_t step, double t0, double t1, Vec4List& b)
+{
+  const int p = count - 1;
+  auto at = [&](int i) -> Vec4& { return line[i * step]; };
+  b.resize(count);
+  if (t1 < 1.0)
+  {
+    for (int i = 0; i < count; ++i)
+      b[i] = at(i);
+    for (int k = 1; k <= p; ++k)
+    {
+      for (int i = 0; i <= p - k; ++i)
+        b[i] = (1.0 - t1) * b[i] + t1 * b[i + 1];
+      at(k) = b[0]; // the left part: at(0) stays
+    }
+  }
+  if (t0 <= 0.0)
+    return;
+  const double t = t0 / t1;
+  for (int i = 0; i < count; ++i)
+    b[i] = at(i);
+  for (int k = 1; k <= p; ++k)
+  {
+    for (int i = 0; i <= p - k; ++i)
+      b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+    at(p - k) = b[p - k]; // the right part: at(p) stays
+  }
+}
+} // namespace
+
+Box3 BezierPatch::subPatchBox(double u0, double u1, double v0, double v1) const
+{
+  thread_local Vec4List net, line;
+  net.assign(Net.begin(), Net.end());
+  if (u0 > 0.0 || u1 < 1.0)
+  {
+    for (int j = 0; j <= Q; ++j)
+      segmentInPlace(net.data() + j, P + 1, Q + 1, u0, u1, line);
+  }
+  if (v0 > 0.0 || v1 < 1.0)
+  {
+    for (int i = 0; i <= P; ++i)
+      segmentInPlace(net.data() + i * (Q + 1), Q + 1, 1, v0, v1, line);
+  }
+  Box3 box;
+  for (const Vec4& h : net)
+    box.extend(euclidean(h));
+  return box;
+}
+
 BezierCurve BezierPatch::side(int s) const
 {
   Vec4List c;

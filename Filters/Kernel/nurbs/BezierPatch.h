@@ -59,6 +59,9 @@ public:
   BezierPatch inStandardForm() const;
   /// The patch over [u0,u1]×[v0,v1], re-parameterised to [0,1]².
   BezierPatch subPatch(double u0, double u1, double v0, double v1) const;
+  /// subPatch(u0, u1, v0, v1).boundingBox(), bit for bit, without building the patch (per-
+  /// thread scratch; no allocation once warm): the subdivision search's pruning per box.
+  Box3 subPatchBox(double u0, double u1, double v0, double v1) const;
   /// Boundary side s (0..3, see above) as a Bézier curve in counter-clockwise order.
   BezierCurve side(int s) const;
   /// The patch parameter (u, v) of parameter t along side s.
