@@ -760,7 +760,7 @@ thread_local int BoxLimit = MaxPatchBoxes;
 // (or two halves) of each polynomial it splits.
 struct ScratchLevel
 {
-  BernsteinPoly2 u[4], v[4];
+  BernsteinPoly2 u[4], v[4], d[4];
 };
 
 // Scratch levels reused by every search on this thread, so that boxes allocate nothing
@@ -796,6 +796,31 @@ private:
 thread_local std::vector<std::unique_ptr<std::deque<ScratchLevel>>> ScratchLease::Sets;
 thread_local size_t ScratchLease::InUse = 0;
 
+// |S − P|²·w² − R²·w² in Bernstein form (S = X / w the patch, P the query): negative
+// exactly where the patch enters the ball of radius R about P. `zero` receives its
+// rounding level.
+BernsteinPoly2 ballPolynomial(const BezierPatch& patch, const Vec3& query, double radius, double* zero = nullptr)
+{
+  const int p = patch.degreeU(), q = patch.degreeV();
+  BernsteinPoly2 d[3], w(p, q);
+  for (int k = 0; k < 3; ++k)
+    d[k] = BernsteinPoly2(p, q);
+  for (int i = 0; i <= p; ++i)
+  {
+    for (int j = 0; j <= q; ++j)
+    {
+      const Vec4& hp = patch.homogeneousPoint(i, j);
+      for (int k = 0; k < 3; ++k)
+        d[k].at(i, j) = hp(k) - query(k) * hp.w();
+      w.at(i, j) = hp.w();
+    }
+  }
+  const BernsteinPoly2 squares = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], ball = (radius * radius) * (w * w);
+  if (zero)
+    *zero = 1e-12 * (squares.maxAbs() + ball.maxAbs());
+  return squares - ball;
+}
+
 struct PatchSearch
 {
   PatchSearch(const BezierPatch& patch_, const Vec3& q_, double maxDistance_, double zeroU_, double zeroV_, int limit_)
@@ -818,6 +843,10 @@ struct PatchSearch
   std::array<bool, 4> collapsed{ { false, false, false, false } };
   std::array<Vec3, 4> pole;  ///< each collapsed side's point
   double size = 0.0;         ///< the patch's bounding box diagonal
+  /// With a finite maxDistance: the ball polynomial of radius maxDistance and its
+  /// rounding; a box on which it is positive lies outside the ball.
+  bool byBall = false;
+  double zeroD = 0.0;
   ScratchLease scratch;
 
   void add(double u, double v)
@@ -833,14 +862,24 @@ struct PatchSearch
     }
   }
 
-  void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, double u0, double u1,
-    double v0, double v1, int depth, int poleCuts = 0)
+  void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, const BernsteinPoly2& gd, double u0,
+    double u1, double v0, double v1, int depth, int poleCuts = 0)
   {
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
     ++Work;
     if (++boxes > limit || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
+    {
+      return;
+    }
+    // Outside the ball of radius maxDistance: first by the ball polynomial's coefficients
+    // (tight on small boxes: next to an osculating touch, where the distance grows only as
+    // the fourth power across the ridge, gu and gv stay undecided along a ribbon that
+    // squares would have to follow to 1e-7 for 0.4 of the patch, but the distance there is
+    // past maxDistance in a few levels), then by the sub-patch's bounding box (tighter on
+    // large boxes).
+    if (byBall && *std::min_element(gd.c.begin(), gd.c.end()) > zeroD)
     {
       return;
     }
@@ -915,30 +954,36 @@ struct PatchSearch
     if (acrossV != acrossU)
     {
       BernsteinPoly2 &lu = parts.u[0], &hu = parts.u[1], &lv = parts.v[0], &hv = parts.v[1];
+      BernsteinPoly2 &ld = parts.d[0], &hd = parts.d[1];
       const double m = acrossU ? u0 + SplitAt * (u1 - u0) : v0 + SplitAt * (v1 - v0);
       gu.split(SplitAt, acrossU, lu, hu);
       gv.split(SplitAt, acrossU, lv, hv);
+      if (byBall)
+        gd.split(SplitAt, acrossU, ld, hd);
       if (acrossU)
       {
-        search(lu, lv, u0, m, v0, v1, depth, poleCuts + 1);
-        search(hu, hv, m, u1, v0, v1, depth, poleCuts + 1);
+        search(lu, lv, ld, u0, m, v0, v1, depth, poleCuts + 1);
+        search(hu, hv, hd, m, u1, v0, v1, depth, poleCuts + 1);
       }
       else
       {
-        search(lu, lv, u0, u1, v0, m, depth, poleCuts + 1);
-        search(hu, hv, u0, u1, m, v1, depth, poleCuts + 1);
+        search(lu, lv, ld, u0, u1, v0, m, depth, poleCuts + 1);
+        search(hu, hv, hd, u0, u1, m, v1, depth, poleCuts + 1);
       }
       return;
     }
     const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
     BernsteinPoly2(&pu)[4] = parts.u;
     BernsteinPoly2(&pv)[4] = parts.v;
+    BernsteinPoly2(&pd)[4] = parts.d;
     gu.quarter(SplitAt, SplitAt, pu);
     gv.quarter(SplitAt, SplitAt, pv);
-    search(pu[0], pv[0], u0, um, v0, vm, depth + 1, poleCuts);
-    search(pu[1], pv[1], um, u1, v0, vm, depth + 1, poleCuts);
-    search(pu[2], pv[2], u0, um, vm, v1, depth + 1, poleCuts);
-    search(pu[3], pv[3], um, u1, vm, v1, depth + 1, poleCuts);
+    if (byBall)
+      gd.quarter(SplitAt, SplitAt, pd);
+    search(pu[0], pv[0], pd[0], u0, um, v0, vm, depth + 1, poleCuts);
+    search(pu[1], pv[1], pd[1], um, u1, v0, vm, depth + 1, poleCuts);
+    search(pu[2], pv[2], pd[2], u0, um, vm, v1, depth + 1, poleCuts);
+    search(pu[3], pv[3], pd[3], um, u1, vm, v1, depth + 1, poleCuts);
   }
 };
 
@@ -1018,7 +1063,13 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
       }
     }
   }
-  search.search(gu, gv, 0.0, 1.0, 0.0, 1.0, 0);
+  BernsteinPoly2 gd;
+  if (std::isfinite(maxDistance))
+  {
+    gd = ballPolynomial(patch, query, maxDistance, &search.zeroD);
+    search.byBall = true;
+  }
+  search.search(gu, gv, gd, 0.0, 1.0, 0.0, 1.0, 0);
   if (boxBudget)
     *boxBudget -= search.boxes;
   result = search.found;
@@ -1311,22 +1362,7 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
 {
   if (!(radius > 0.0) || distanceToBox(patch.boundingBox(), query) >= radius)
     return false;
-  const int p = patch.degreeU(), q = patch.degreeV();
-  BernsteinPoly2 d[3], w(p, q);
-  for (int k = 0; k < 3; ++k)
-    d[k] = BernsteinPoly2(p, q);
-  for (int i = 0; i <= p; ++i)
-  {
-    for (int j = 0; j <= q; ++j)
-    {
-      const Vec4& hp = patch.homogeneousPoint(i, j);
-      for (int k = 0; k < 3; ++k)
-        d[k].at(i, j) = hp(k) - query(k) * hp.w();
-      w.at(i, j) = hp.w();
-    }
-  }
-  const BernsteinPoly2 h = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - (radius * radius) * (w * w);
-  return ComesWithin{}.negativeSomewhere(h, 0, 0);
+  return ComesWithin{}.negativeSomewhere(ballPolynomial(patch, query, radius), 0, 0);
 }
 
 std::uint64_t patchSearchWork()
