@@ -751,6 +751,51 @@ bool newtonPatch(const BezierPatch& patch, const Vec3& q, double& u, double& v, 
   return a + c >= -tol && a * c - b * b >= -std::max(tol * tol, 1e-12 * (a * a + b * b + c * c));
 }
 
+// How much p's coefficients vary along u (the largest range down a column i = 0 … nu) and
+// along v (along a row).
+void spreads(const BernsteinPoly2& p, double& alongU, double& alongV)
+{
+  alongU = alongV = 0.0;
+  for (int j = 0; j <= p.nv; ++j)
+  {
+    double lo = p.at(0, j), hi = lo;
+    for (int i = 1; i <= p.nu; ++i)
+    {
+      lo = std::min(lo, p.at(i, j));
+      hi = std::max(hi, p.at(i, j));
+    }
+    alongU = std::max(alongU, hi - lo);
+  }
+  for (int i = 0; i <= p.nu; ++i)
+  {
+    double lo = p.at(i, 0), hi = lo;
+    for (int j = 1; j <= p.nv; ++j)
+    {
+      lo = std::min(lo, p.at(i, j));
+      hi = std::max(hi, p.at(i, j));
+    }
+    alongV = std::max(alongV, hi - lo);
+  }
+}
+
+// The direction to halve a box whose gu and gv both change sign (PatchSearch): of the two,
+// the one nearer a strict sign (the smaller share of its coefficients' range on the
+// minority side of 0) decides; 1: halve in u, −1: in v, 0: quarter (it varies about as
+// much either way).
+int anisotropicSplit(const BernsteinPoly2& gu, const BernsteinPoly2& gv)
+{
+  auto minority = [](const BernsteinPoly2& p) {
+    const auto [lo, hi] = std::minmax_element(p.c.begin(), p.c.end());
+    const double range = *hi - *lo;
+    return range > 0.0 ? std::max(0.0, std::min(-*lo, *hi)) / range : 0.0;
+  };
+  const BernsteinPoly2& p = minority(gu) <= minority(gv) ? gu : gv;
+  double alongU = 0.0, alongV = 0.0;
+  spreads(p, alongU, alongV);
+  constexpr double Skew = 4.0;
+  return alongU > Skew * alongV ? 1 : alongV > Skew * alongU ? -1 : 0;
+}
+
 // Boxes searched on this thread (patchSearchWork), and the limit of one search
 // (PatchSearchLimit).
 thread_local std::uint64_t Work = 0;
@@ -863,8 +908,9 @@ struct PatchSearch
   }
 
   void search(const BernsteinPoly2& gu, const BernsteinPoly2& gv, const BernsteinPoly2& gd, double u0,
-    double u1, double v0, double v1, int depth, int poleCuts = 0)
+    double u1, double v0, double v1, int depthU, int depthV, int poleCuts)
   {
+    const int depth = std::max(depthU, depthV);
     // The bound on the work: a curve of stationary points that Newton cannot settle would
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
@@ -950,7 +996,8 @@ struct PatchSearch
       return; // within rounding of the pole: its side's own search has it
     // The children's polynomials live in this level's scratch: the search goes depth
     // first, so a level's parts are free again once their boxes are done.
-    ScratchLevel& parts = scratch.at(depth + poleCuts);
+    // (Every nested call adds to depthU + depthV + poleCuts: a level per nesting.)
+    ScratchLevel& parts = scratch.at(depthU + depthV + poleCuts);
     if (acrossV != acrossU)
     {
       BernsteinPoly2 &lu = parts.u[0], &hu = parts.u[1], &lv = parts.v[0], &hv = parts.v[1];
@@ -962,17 +1009,47 @@ struct PatchSearch
         gd.split(SplitAt, acrossU, ld, hd);
       if (acrossU)
       {
-        search(lu, lv, ld, u0, m, v0, v1, depth, poleCuts + 1);
-        search(hu, hv, hd, m, u1, v0, v1, depth, poleCuts + 1);
+        search(lu, lv, ld, u0, m, v0, v1, depthU, depthV, poleCuts + 1);
+        search(hu, hv, hd, m, u1, v0, v1, depthU, depthV, poleCuts + 1);
       }
       else
       {
-        search(lu, lv, ld, u0, u1, v0, m, depth, poleCuts + 1);
-        search(hu, hv, hd, u0, u1, m, v1, depth, poleCuts + 1);
+        search(lu, lv, ld, u0, u1, v0, m, depthU, depthV, poleCuts + 1);
+        search(hu, hv, hd, u0, u1, m, v1, depthU, depthV, poleCuts + 1);
       }
       return;
     }
     const double um = u0 + SplitAt * (u1 - u0), vm = v0 + SplitAt * (v1 - v0);
+    // Deep and still undecided within a distance bound (counting a ball's touchpoints):
+    // next to a degenerate minimum (an osculating ball's touch, flat to fourth order
+    // across the ridge) gu = 0 and gv = 0 are curves tangent at the foot and close along
+    // a ribbon beside it. At t from the foot a box shows its sign only when about t long
+    // along the ribbon and t² across, and squares t² wide along 0.1 of a ribbon took the
+    // whole box budget (200,000) before reaching the foot. Halve instead the direction in
+    // which the polynomial nearer a strict sign varies most, while it varies far more
+    // that way.
+    if (byBall && depth >= DegenerateCheckDepth)
+    {
+      const int along = anisotropicSplit(gu, gv);
+      if (along != 0)
+      {
+        const bool alongU = along > 0;
+        gu.split(SplitAt, alongU, parts.u[0], parts.u[1]);
+        gv.split(SplitAt, alongU, parts.v[0], parts.v[1]);
+        gd.split(SplitAt, alongU, parts.d[0], parts.d[1]);
+        if (alongU)
+        {
+          search(parts.u[0], parts.v[0], parts.d[0], u0, um, v0, v1, depthU + 1, depthV, poleCuts);
+          search(parts.u[1], parts.v[1], parts.d[1], um, u1, v0, v1, depthU + 1, depthV, poleCuts);
+        }
+        else
+        {
+          search(parts.u[0], parts.v[0], parts.d[0], u0, u1, v0, vm, depthU, depthV + 1, poleCuts);
+          search(parts.u[1], parts.v[1], parts.d[1], u0, u1, vm, v1, depthU, depthV + 1, poleCuts);
+        }
+        return;
+      }
+    }
     BernsteinPoly2(&pu)[4] = parts.u;
     BernsteinPoly2(&pv)[4] = parts.v;
     BernsteinPoly2(&pd)[4] = parts.d;
@@ -980,10 +1057,10 @@ struct PatchSearch
     gv.quarter(SplitAt, SplitAt, pv);
     if (byBall)
       gd.quarter(SplitAt, SplitAt, pd);
-    search(pu[0], pv[0], pd[0], u0, um, v0, vm, depth + 1, poleCuts);
-    search(pu[1], pv[1], pd[1], um, u1, v0, vm, depth + 1, poleCuts);
-    search(pu[2], pv[2], pd[2], u0, um, vm, v1, depth + 1, poleCuts);
-    search(pu[3], pv[3], pd[3], um, u1, vm, v1, depth + 1, poleCuts);
+    search(pu[0], pv[0], pd[0], u0, um, v0, vm, depthU + 1, depthV + 1, poleCuts);
+    search(pu[1], pv[1], pd[1], um, u1, v0, vm, depthU + 1, depthV + 1, poleCuts);
+    search(pu[2], pv[2], pd[2], u0, um, vm, v1, depthU + 1, depthV + 1, poleCuts);
+    search(pu[3], pv[3], pd[3], um, u1, vm, v1, depthU + 1, depthV + 1, poleCuts);
   }
 };
 
@@ -1069,7 +1146,7 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     gd = ballPolynomial(patch, query, maxDistance, &search.zeroD);
     search.byBall = true;
   }
-  search.search(gu, gv, gd, 0.0, 1.0, 0.0, 1.0, 0);
+  search.search(gu, gv, gd, 0.0, 1.0, 0.0, 1.0, 0, 0, 0);
   if (boxBudget)
     *boxBudget -= search.boxes;
   result = search.found;
