@@ -444,9 +444,10 @@ TEST(MAT3D, ShortCylinderIsADiskBoundedByACircularSeam)
 // once and osculates. Patch layouts: poles on the shortest axis with the meridians cut off
 // the equator, below it, or on it (the rim's touch then runs along the patches' common
 // side); poles on the longest or middle axis (the rim passes through them: stepped over;
-// verified by the closed form only — next to a pole the verification's footpoint search
-// misses an osculating ball's touch, README limits); x, y or z shortest; flat ones; moved,
-// turned, scaled and reweighted.
+// next to a pole an osculating ball's touch can stop the verification's footpoint search
+// at its box limit, and the ball is verified by witness: its recorded touch on the
+// boundary at the radius, the ball shrunk by the tolerance empty); x, y or z shortest;
+// flat ones; moved, turned, scaled and reweighted.
 TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
 {
   struct Case
@@ -501,8 +502,6 @@ TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
     EXPECT_LE(longest, MAT3DOptions().maxStep * (1 + 1e-9)) << what.str();
     // (Verified once here: a ball osculating a face takes the footpoint search milliseconds.)
     EXPECT_TRUE(topologyProblems(t).empty()) << what.str();
-    if (c.polar != shortest)
-      continue;
     const PatchBoundary boundary(*t.boundary);
     const MedialVerification v =
       verifyMedialComplex(boundary, t.mat.complex(), 1, std::max(1e-15, 64.0 * frame.inputRounding()));
@@ -511,7 +510,9 @@ TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
     EXPECT_EQ(v.contactsChecked, static_cast<int>(rim.balls.size()) - 1) << what.str();
     EXPECT_EQ(v.osculationsChecked, static_cast<int>(rim.balls.size()) - 1) << what.str();
     EXPECT_EQ(v.osculationMismatches, 0) << what.str();
-    if (!c.moved)
+    // (Next to a pole the contact is known less well across the ridge than the bound the
+    // verification allows for rounding says: 1.05e-6 there. Elsewhere it is at rounding.)
+    if (!c.moved && c.polar == shortest)
     {
       EXPECT_LE(v.maxOsculationError, MedialVerification::OsculationTolerance) << what.str();
     }
@@ -544,6 +545,49 @@ TEST(MAT3D, RimBallsBesideAPoleAreVerifiedExactly)
   EXPECT_EQ(v.contactMismatches, 0);
   EXPECT_GE(v.contactsChecked, 30);
   EXPECT_LE(patchSearchWork() - before, 400000u);
+}
+
+// The witness that stands in for a touchpoint search stopped at its box limit (next to a
+// pole, an osculating ball's touch can exhaust it) must vouch only for right balls. With
+// the searches held to 40 boxes, most rim balls of an ellipsoid are checked by witness:
+// the exact ones pass, and rim balls made 1e-6 of the size too large or too small are
+// flagged.
+TEST(MAT3D, AWitnessedRimBallThatIsWrongIsFlagged)
+{
+  const Traced t = trace(patchPieces(ellipsoidSurfaces(Vec3(2, 1.5, 1), M_PI / 6, 2)));
+  const PatchBoundary boundary(*t.boundary);
+  const MedialComplex exact = t.mat.complex();
+  const PatchSearchLimit limit(40);
+  const MedialVerification v = verifyMedialComplex(boundary, exact);
+  EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance);
+  EXPECT_EQ(v.contactMismatches, 0);
+  EXPECT_EQ(v.osculationMismatches, 0);
+  EXPECT_GE(v.witnessed, v.contactsChecked / 2) << "the witness is not exercised";
+  for (const double change : { 1e-6, -1e-6 })
+  {
+    MedialComplex wrong = exact;
+    for (MedialPoint3D& p : wrong.points)
+      if (p.type == MedialPoint3DType::SkeletalEdge)
+        p.radius += change * boundary.size();
+    const MedialVerification w = verifyMedialComplex(boundary, wrong);
+    EXPECT_GE(w.maxDistanceError, 0.5e-6) << change;
+    EXPECT_FALSE(w.ok(VerifiedDistanceTolerance)) << change;
+  }
+  // The emptiness decision the witness rests on: each rim ball shrunk by 1e-9 of the size
+  // is empty, grown by 1e-6 it is not, and moved off the MAT with its radius still reaching
+  // its touch it is not either.
+  int rimBalls = 0;
+  for (const MedialPoint3D& p : exact.points)
+  {
+    if (p.type != MedialPoint3DType::SkeletalEdge || p.touches.size() != 1 || rimBalls++ % 5 != 0)
+      continue;
+    const double size = boundary.size();
+    EXPECT_FALSE(boundary.comesWithin(p.x, p.radius - 1e-9 * size));
+    EXPECT_TRUE(boundary.comesWithin(p.x, p.radius + 1e-6 * size));
+    const Vec3 off = p.x + 0.01 * size * Vec3(1, 1, 1).normalized();
+    EXPECT_TRUE(boundary.comesWithin(off, (p.touches.front() - off).norm() - 1e-9 * size));
+  }
+  EXPECT_GE(rimBalls, 20);
 }
 
 // Circles of contact (CentreCurve.h). A cylinder of radius R and length 2h > 2R: its axis

@@ -800,6 +800,7 @@ int anisotropicSplit(const BernsteinPoly2& gu, const BernsteinPoly2& gv)
 // (PatchSearchLimit).
 thread_local std::uint64_t Work = 0;
 thread_local int BoxLimit = MaxPatchBoxes;
+thread_local std::uint64_t CutShort = 0; // searches stopped at their limit (patchSearchesCutShort)
 
 // The polynomials of one recursion level of a subdivision search: a box's four quarters
 // (or two halves) of each polynomial it splits.
@@ -915,7 +916,12 @@ struct PatchSearch
     // otherwise cost 2^depth boxes. Past it, boxes are dropped (the patch's border curves
     // are searched separately and carry such curves where they end).
     ++Work;
-    if (++boxes > limit || gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
+    if (++boxes > limit)
+    {
+      CutShort += boxes == limit + 1 ? 1 : 0;
+      return;
+    }
+    if (gu.hasStrictSign(zeroU) || gv.hasStrictSign(zeroV))
     {
       return;
     }
@@ -1306,6 +1312,10 @@ std::vector<PatchFootpoint> elongatedFootpoints(
         maxDistance = std::min(maxDistance, f.distance);
     }
   }
+  // Pieces within reach left unsearched (the shared budget or the piece count spent):
+  // this search was cut short too.
+  if (!queue.empty() && queue.top().gap <= maxDistance && boxBudget > 0)
+    ++CutShort;
   std::sort(found.begin(), found.end(),
     [](const PatchFootpoint& a, const PatchFootpoint& b) { return a.distance < b.distance; });
   std::vector<PatchFootpoint> unique;
@@ -1445,6 +1455,11 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
 std::uint64_t patchSearchWork()
 {
   return Work;
+}
+
+std::uint64_t patchSearchesCutShort()
+{
+  return CutShort;
 }
 
 PatchSearchLimit::PatchSearchLimit(int boxes)

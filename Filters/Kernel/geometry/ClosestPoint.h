@@ -104,6 +104,11 @@ double distanceToBox(const Box3& box, const Vec3& p);
 /// examined so far: a deterministic measure of their work, for budgets.
 std::uint64_t patchSearchWork();
 
+/// How many patch footpoint searches of this thread have stopped at their box limit so
+/// far (their answers may lack a footpoint): callers that must not be silently wrong read
+/// it before and after a query.
+std::uint64_t patchSearchesCutShort();
+
 /// While it lives, each patch search of this thread examines at most `boxes` boxes (the
 /// default is generous: a curve of degenerate minima is followed far before boxes are
 /// dropped). For speculative work that is undone when it goes wrong, such as the 3D

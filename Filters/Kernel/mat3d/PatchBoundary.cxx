@@ -179,6 +179,48 @@ Vec3 PatchBoundary::nearestPoint(const Vec3& x) const
   return nearest;
 }
 
+bool PatchBoundary::comesWithin(const Vec3& x, double radius) const
+{
+  for (int i : Tree.candidatesWithin(x, radius))
+  {
+    Vec3 c[4];
+    if (flatPolygon(Boundary->faces()[i], Flat, c) > 0 ? nearestOnFace(Boundary->faces()[i], Flat, x).distance < radius
+                                                       : patchComesWithin(Boundary->faces()[i].patch, x, radius))
+      return true;
+  }
+  return false;
+}
+
+SolidBoundary::Contact PatchBoundary::nearestContact(const Vec3& x) const
+{
+  Contact best;
+  best.distance = Unbounded;
+  Tree.nearest(x,
+    [&](int i) {
+      const PatchFootpoint f = nearestOnFace(Boundary->faces()[i], Flat, x);
+      if (f.distance < best.distance)
+      {
+        best.point = f.point;
+        best.distance = f.distance;
+        best.source = i;
+        Vec3 c[4];
+        best.parameters = flatPolygon(Boundary->faces()[i], Flat, c) > 0 ? Vec2::Constant(NAN) : Vec2(f.u, f.v);
+      }
+      return f.distance;
+    },
+    nullptr);
+  return best;
+}
+
+bool PatchBoundary::searchesCutShort() const
+{
+  thread_local std::uint64_t seen = 0;
+  const std::uint64_t now = patchSearchesCutShort();
+  const bool cut = now != seen;
+  seen = now;
+  return cut;
+}
+
 std::vector<SolidBoundary::Contact> PatchBoundary::touchpoints(const Vec3& x, double radius) const
 {
   std::vector<Minimum> minima;

@@ -22,6 +22,10 @@ public:
   double distance(const Vec3& x) const override;
   /// Contact sources are face indices.
   std::vector<Contact> touchpoints(const Vec3& x, double radius) const override;
+  /// Planar faces by their polygon's distance, curved ones by patchComesWithin.
+  bool comesWithin(const Vec3& x, double radius) const override;
+  bool searchesCutShort() const override;
+  Contact nearestContact(const Vec3& x) const override;
   double size() const override { return Size; }
   double aspect() const override { return Aspect; }
   double inputRounding() const override { return Boundary->userFrame().inputRounding(); }

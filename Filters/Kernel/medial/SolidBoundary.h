@@ -30,6 +30,24 @@ public:
   /// Global distance from x to the boundary.
   virtual double distance(const Vec3& x) const = 0;
 
+  /// Whether some boundary point lies strictly within `radius` of x: a decision, cheaper
+  /// and more robust than the distance where a ball touches along a flat valley.
+  virtual bool comesWithin(const Vec3& x, double radius) const { return distance(x) < radius; }
+
+  /// The boundary point nearest x as a contact (its face and parameters where the
+  /// implementation knows them): where a recorded touch lies, to check it.
+  virtual Contact nearestContact(const Vec3& x) const
+  {
+    Contact c;
+    c.point = nearestPoint(x);
+    c.distance = (c.point - x).norm();
+    return c;
+  }
+
+  /// Whether the touchpoint queries since the last call may have missed a touchpoint
+  /// (a search stopped at its work limit); reading it resets it for this thread.
+  virtual bool searchesCutShort() const { return false; }
+
   /// The distinct touchpoints of the ball of radius `radius` about x: local minima of the
   /// distance within `radius`, nearest first.
   virtual std::vector<Contact> touchpoints(const Vec3& x, double radius) const = 0;

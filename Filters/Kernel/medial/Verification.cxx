@@ -34,6 +34,7 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
   std::vector<double> error(chosen.size(), 0.0);
   std::vector<int> count(chosen.size(), -1);
   std::vector<double> osculation(chosen.size(), NAN);
+  std::vector<char> witnessed(chosen.size(), 0);
   parallel(chosen.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
@@ -41,14 +42,45 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
       // A point whose touchpoints are counted: the nearest of them is the global distance
       // whenever that is within their reach (the same exact search, asked once).
       double distance = INFINITY;
+      double bound = 0.0; // what a witness leaves open of |distance − radius|
       if (p.contacts > 0)
       {
+        boundary.searchesCutShort(); // (resets it)
         const auto contacts = boundary.touchpoints(p.x, p.radius * (1.0 + 2e-9) + inputRounding * size);
         count[k] = static_cast<int>(contacts.size());
         for (const SolidBoundary::Contact& c : contacts)
           distance = std::min(distance, c.distance);
         if (p.type == MedialPoint3DType::SkeletalEdge && contacts.size() == 1)
           osculation[k] = boundary.osculation(contacts.front(), p.x, p.radius);
+        // Fewer touches than constructed, and a search stopped at its limit: the
+        // construction's own touches stand witness where each lies on the boundary at the
+        // radius (so the distance is at most that) and the ball shrunk by the tolerance is
+        // empty (so it is at least that): exact decisions, not a search for minima.
+        if (count[k] < p.contacts && boundary.searchesCutShort() && !p.touches.empty())
+        {
+          const double slack = 1e-12 * size + inputRounding * size;
+          double farthest = 0.0;
+          int unmatched = 0;
+          bool onBoundary = true;
+          SolidBoundary::Contact at;
+          for (const Vec3& touch : p.touches)
+          {
+            at = boundary.nearestContact(touch);
+            onBoundary = onBoundary && at.distance <= slack;
+            farthest = std::max(farthest, (touch - p.x).norm());
+            unmatched += std::none_of(contacts.begin(), contacts.end(),
+              [&](const SolidBoundary::Contact& c) { return (c.point - touch).norm() <= 1e-9 * size; });
+          }
+          if (onBoundary && !boundary.comesWithin(p.x, p.radius - slack))
+          {
+            distance = std::min(distance, farthest);
+            bound = slack;
+            count[k] += unmatched;
+            if (p.type == MedialPoint3DType::SkeletalEdge && p.touches.size() == 1)
+              osculation[k] = boundary.osculation(at, p.x, p.radius);
+            witnessed[k] = 1;
+          }
+        }
       }
       if (!(distance < INFINITY))
       {
@@ -65,13 +97,14 @@ MedialVerification verifyMedialComplex(const SolidBoundary& boundary, const Medi
             distance = std::min(distance, (touch - p.x).norm());
         }
       }
-      error[k] = std::abs(distance - p.radius) / size;
+      error[k] = std::max(std::abs(distance - p.radius), bound) / size;
     }
   });
   for (std::size_t k = 0; k < chosen.size(); ++k)
   {
     const int i = chosen[k];
     ++v.points;
+    v.witnessed += witnessed[k];
     if (!(error[k] <= v.maxDistanceError))
     {
       v.maxDistanceError = std::isnan(error[k]) ? INFINITY : error[k];

@@ -24,6 +24,11 @@ struct MedialVerification
   int contactMismatches = 0;     ///< of those, how many have another count
   int firstMismatch = -1;        ///< the first such point
   int firstMismatchCount = 0;    ///< and how many touchpoints it has
+  /// Points whose touchpoint search stopped at its work limit short of a touch (an
+  /// osculating ball next to a patch's pole: the distance is flat to fourth order there)
+  /// and that were verified instead by witness: each recorded touch on the boundary at
+  /// the radius, and the ball shrunk by the tolerance empty (SolidBoundary::comesWithin).
+  int witnessed = 0;
   /// Skeletal edge points whose one touch lies inside a curved face: the ball must osculate
   /// the face there, radius = 1/κ1 (κ1 its largest principal curvature).
   int osculationsChecked = 0;
@@ -64,7 +69,8 @@ struct MedialVerification
 /// checked to osculate it: radius·κ1 = 1 (SolidBoundary::osculation). A centre of a ball
 /// touching a whole circle is checked by distance; its recorded touch, when on the
 /// boundary, bounds that distance from above (the search over a ring of minima may stop
-/// at a near-minimum).
+/// at a near-minimum). A point whose touchpoint search stops at its work limit short of
+/// its touches is checked by witness (MedialVerification::witnessed).
 /// `parallel` runs the per-point queries; the figures are the same whichever runner is given.
 MedialVerification verifyMedialComplex(
   const SolidBoundary& boundary, const MedialComplex& mat, int sheetStride = 1,
