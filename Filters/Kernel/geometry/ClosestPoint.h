@@ -76,6 +76,11 @@ std::vector<PatchFootpoint> patchFootpoints(
 /// The global closest point of the patch.
 PatchFootpoint closestPoint(const BezierPatch& patch, const Vec3& query);
 
+/// The closest point of the patch when it lies within `bound`; nothing when the patch
+/// stays farther. Bounded, the search drops boxes outside the ball and follows the ribbon
+/// beside an osculating touch in few boxes, where the unbounded one can run to its limit.
+std::optional<PatchFootpoint> closestPointWithin(const BezierPatch& patch, const Vec3& query, double bound);
+
 /// A foot of the query on the patch found locally: Gauss–Newton on S(u, v) − P ⊥ S_u, S_v
 /// from `start`, kept in the square (at most 24 steps). The foot when it settles (a step
 /// within `settled`, a length — the input's rounding — or the query on the patch within it)

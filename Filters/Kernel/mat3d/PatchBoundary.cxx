@@ -156,9 +156,34 @@ double PatchBoundary::osculation(const Contact& contact, const Vec3& centre, dou
 
 double PatchBoundary::distance(const Vec3& x) const
 {
-  double d = Unbounded;
-  Tree.nearest(x, [&](int i) { return nearestOnFace(Boundary->faces()[i], Flat, x).distance; }, &d);
-  return d;
+  // A curved face is searched within a bound: the nearest face so far, or its own nearest
+  // sample (corners, centre). Bounded, its search drops boxes outside that ball by the
+  // ball polynomial and halves boxes across the ribbon beside an osculating touch
+  // (ClosestPoint), where unbounded it would quarter them to its box limit.
+  double best = Unbounded;
+  Tree.nearest(x,
+    [&](int i) {
+      const Face3D& face = Boundary->faces()[i];
+      Vec3 c[4];
+      if (flatPolygon(face, Flat, c) > 0)
+      {
+        const double d = nearestOnFace(face, Flat, x).distance;
+        best = std::min(best, d);
+        return d;
+      }
+      double sample = (face.patch.evaluate(0.5, 0.5) - x).norm();
+      for (const Vec2& uv : { Vec2(0, 0), Vec2(1, 0), Vec2(0, 1), Vec2(1, 1) })
+        sample = std::min(sample, (face.patch.evaluate(uv.x(), uv.y()) - x).norm());
+      const double bound = std::min(best, sample) * (1.0 + 1e-9) + 1e-300;
+      const std::optional<PatchFootpoint> foot = closestPointWithin(face.patch, x, bound);
+      // (None within a face's own sample: its search stopped short; the sample bounds the
+      // distance from above, so a point that it leaves off is flagged, not passed.)
+      const double d = foot ? foot->distance : sample <= best ? sample : Unbounded;
+      best = std::min(best, d);
+      return d;
+    },
+    nullptr);
+  return best;
 }
 
 Vec3 PatchBoundary::nearestPoint(const Vec3& x) const
