@@ -868,6 +868,9 @@ BernsteinPoly2 ballPolynomial(const BezierPatch& patch, const Vec3& query, doubl
   return squares - ball;
 }
 
+// The ball polynomial's stand-in for a box wholly inside the ball (PatchSearch::search).
+const BernsteinPoly2 InsideBall;
+
 struct PatchSearch
 {
   PatchSearch(const BezierPatch& patch_, const Vec3& q_, double maxDistance_, double zeroU_, double zeroV_, int limit_)
@@ -948,11 +951,21 @@ struct PatchSearch
       own = ball.restrictedTo(u0, u1, v0, v1);
       gd = &own;
     }
-    if (gd && *std::min_element(gd->c.begin(), gd->c.end()) > zeroD)
+    // Wholly inside the ball, so is every part of the box: the polynomial can prune
+    // nothing below, and is not carried (a clean foot's neighbourhood, most deep boxes);
+    // the children get InsideBall to say so.
+    bool inside = gd == &InsideBall;
+    if (gd && !inside)
     {
-      return;
+      const auto [lo, hi] = std::minmax_element(gd->c.begin(), gd->c.end());
+      if (*lo > zeroD)
+        return;
+      inside = *hi < -zeroD;
     }
-    if (std::isfinite(maxDistance) &&
+    if (inside)
+      gd = nullptr;
+    auto childBall = [&](BernsteinPoly2& part) -> const BernsteinPoly2* { return gd ? &part : inside ? &InsideBall : nullptr; };
+    if (!inside && std::isfinite(maxDistance) &&
       distanceToBox(patch.subPatchBox(u0, u1, v0, v1), q) > maxDistance)
     {
       return;
@@ -1030,7 +1043,7 @@ struct PatchSearch
       gv.split(SplitAt, acrossU, lv, hv);
       if (gd)
         gd->split(SplitAt, acrossU, ld, hd);
-      const BernsteinPoly2 *pld = gd ? &ld : nullptr, *phd = gd ? &hd : nullptr;
+      const BernsteinPoly2 *pld = childBall(ld), *phd = childBall(hd);
       if (acrossU)
       {
         search(lu, lv, pld, u0, m, v0, v1, depthU, depthV, poleCuts + 1);
@@ -1052,7 +1065,7 @@ struct PatchSearch
     // whole box budget (200,000) before reaching the foot. Halve instead the direction in
     // which the polynomial nearer a strict sign varies most, while it varies far more
     // that way.
-    if (gd && depth >= DegenerateCheckDepth)
+    if (byBall && depth >= DegenerateCheckDepth)
     {
       const int along = anisotropicSplit(gu, gv);
       if (along != 0)
@@ -1060,16 +1073,18 @@ struct PatchSearch
         const bool alongU = along > 0;
         gu.split(SplitAt, alongU, parts.u[0], parts.u[1]);
         gv.split(SplitAt, alongU, parts.v[0], parts.v[1]);
-        gd->split(SplitAt, alongU, parts.d[0], parts.d[1]);
+        if (gd)
+          gd->split(SplitAt, alongU, parts.d[0], parts.d[1]);
+        const BernsteinPoly2 *d0 = childBall(parts.d[0]), *d1 = childBall(parts.d[1]);
         if (alongU)
         {
-          search(parts.u[0], parts.v[0], &parts.d[0], u0, um, v0, v1, depthU + 1, depthV, poleCuts);
-          search(parts.u[1], parts.v[1], &parts.d[1], um, u1, v0, v1, depthU + 1, depthV, poleCuts);
+          search(parts.u[0], parts.v[0], d0, u0, um, v0, v1, depthU + 1, depthV, poleCuts);
+          search(parts.u[1], parts.v[1], d1, um, u1, v0, v1, depthU + 1, depthV, poleCuts);
         }
         else
         {
-          search(parts.u[0], parts.v[0], &parts.d[0], u0, u1, v0, vm, depthU, depthV + 1, poleCuts);
-          search(parts.u[1], parts.v[1], &parts.d[1], u0, u1, vm, v1, depthU, depthV + 1, poleCuts);
+          search(parts.u[0], parts.v[0], d0, u0, u1, v0, vm, depthU, depthV + 1, poleCuts);
+          search(parts.u[1], parts.v[1], d1, u0, u1, vm, v1, depthU, depthV + 1, poleCuts);
         }
         return;
       }
@@ -1081,7 +1096,7 @@ struct PatchSearch
     gv.quarter(SplitAt, SplitAt, pv);
     if (gd)
       gd->quarter(SplitAt, SplitAt, pd);
-    auto child = [&](int k) { return gd ? &pd[k] : nullptr; };
+    auto child = [&](int k) { return childBall(pd[k]); };
     search(pu[0], pv[0], child(0), u0, um, v0, vm, depthU + 1, depthV + 1, poleCuts);
     search(pu[1], pv[1], child(1), um, u1, v0, vm, depthU + 1, depthV + 1, poleCuts);
     search(pu[2], pv[2], child(2), u0, um, vm, v1, depthU + 1, depthV + 1, poleCuts);
