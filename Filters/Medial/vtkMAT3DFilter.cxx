@@ -113,6 +113,7 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
     result.measure("VerificationSeconds", secondsSince(t0));
     result.count("NumberOfVerifiedPoints", v.points);
     result.count("NumberOfTouchpointMismatches", v.contactMismatches);
+    result.count("NumberOfWitnessedPoints", v.witnessed);
     outcome = exactmat::outcomeOf(v, this->VerificationTolerance, complex, frame);
     // The seam graph's own check (seams per junction), which the points' check cannot see.
     const std::vector<std::string> topology =
@@ -138,6 +139,7 @@ void vtkMAT3DFilter::PublishFigures(const exactmat::PartResult& figures)
   this->NumberOfTouchpointMismatches =
     static_cast<int>(figures.get("NumberOfTouchpointMismatches"));
   this->NumberOfTopologyProblems = static_cast<int>(figures.get("NumberOfTopologyProblems"));
+  this->NumberOfWitnessedPoints = static_cast<int>(figures.get("NumberOfWitnessedPoints"));
   this->TracingSeconds = figures.get("TracingSeconds");
   this->VerificationSeconds = figures.get("VerificationSeconds");
 }

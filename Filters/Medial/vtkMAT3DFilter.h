@@ -93,6 +93,11 @@ public:
   vtkGetMacro(NumberOfSheets, int);
   vtkGetMacro(NumberOfVerifiedPoints, int);
   vtkGetMacro(NumberOfTouchpointMismatches, int);
+  /// Verified points whose touchpoint search ran out of its box limit short of the touch
+  /// (balls osculating a free-form face next to a pole): their distance is proved by their
+  /// recorded touch at the radius and the emptiness of the ball shrunk by 1e-12 of the
+  /// size — exact, but their touch count is then the construction's, not re-counted.
+  vtkGetMacro(NumberOfWitnessedPoints, int);
   vtkGetMacro(TracingSeconds, double);
   vtkGetMacro(VerificationSeconds, double);
   ///@}
@@ -118,6 +123,7 @@ protected:
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;
   int NumberOfTouchpointMismatches = 0;
+  int NumberOfWitnessedPoints = 0;
   double TracingSeconds = 0.0;
   double VerificationSeconds = 0.0;
 

@@ -840,6 +840,10 @@ int run3D(const Arguments& a)
   std::printf("  verified            %d points: largest |distance to boundary - radius| / size %.3g, "
               "touchpoint mismatches %d\n",
     mat->GetNumberOfVerifiedPoints(), mat->GetMaximumVerifiedError(), mat->GetNumberOfTouchpointMismatches());
+  if (mat->GetNumberOfWitnessedPoints() > 0)
+    std::printf("  verified by witness %d points (their touchpoint search ran out of boxes: distance proved by the "
+                "recorded touch and the shrunk ball's emptiness; touch count not re-counted)\n",
+      mat->GetNumberOfWitnessedPoints());
   if (a.sheets)
   {
     std::printf("  sheets time         %.2f ms filling, %.2f ms verification\n",

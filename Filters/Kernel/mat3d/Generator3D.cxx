@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace exactmat
@@ -428,6 +429,16 @@ int Generator3D::exitSide(const Vec2& q, double tolerance) const
   return static_cast<int>(std::max_element(out, out + 4) - out);
 }
 
+bool Generator3D::holds(const Vec2& q, double tolerance) const
+{
+  if (Kind == GeneratorKind3D::Face && Polygon.empty() && Planar)
+  {
+    const auto f = closestPointWithin(Boundary->faces()[Entity].patch, evaluate(q).point, tolerance);
+    return f && f->distance <= tolerance;
+  }
+  return exitSide(q, tolerance) < 0;
+}
+
 Vec3 Generator3D::nearestPoint(const Vec3& x) const
 {
   if (Kind == GeneratorKind3D::ReflexCorner)
@@ -469,6 +480,17 @@ double Generator3D::distance(const Vec3& x) const
   if (Polygon.empty())
     return closestPoint(Boundary->faces()[Entity].patch, x).distance;
   return (nearestPoint(x) - x).norm();
+}
+
+double Generator3D::distanceWithin(const Vec3& x, double bound) const
+{
+  if (Kind == GeneratorKind3D::Face && Polygon.empty() && std::isfinite(bound))
+  {
+    const auto foot = closestPointWithin(Boundary->faces()[Entity].patch, x, bound);
+    return foot && foot->distance < bound ? foot->distance : std::numeric_limits<double>::infinity();
+  }
+  const double d = distance(x);
+  return d < bound ? d : std::numeric_limits<double>::infinity();
 }
 
 bool Generator3D::coplanar(const Generator3D& other, double tolerance) const

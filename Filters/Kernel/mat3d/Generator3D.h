@@ -80,10 +80,16 @@ public:
   /// end vertex. Reflex corners: the index in cornerEdges() of the edge whose normal arc
   /// the normal has crossed.
   int exitSide(const Vec2& q, double tolerance) const;
+  /// exitSide(q, tolerance) < 0, without asking which side: a planar face bounded by
+  /// curves searches only within the tolerance of the point, not the whole patch.
+  bool holds(const Vec2& q, double tolerance) const;
 
   /// Global distance from x to the entity (closed form for straight-sided planar faces,
   /// straight edges and corners).
   double distance(const Vec3& x) const;
+  /// The distance from x when it is below `bound`, else infinity: a curved face is searched
+  /// only where it comes within the bound (the nearest of many pieces, one after another).
+  double distanceWithin(const Vec3& x, double bound) const;
   /// The entity's point nearest x.
   Vec3 nearestPoint(const Vec3& x) const;
 

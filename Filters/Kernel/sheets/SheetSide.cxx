@@ -60,13 +60,38 @@ std::vector<int> sheetSide(const Boundary3D& boundary, const std::vector<Generat
   return members;
 }
 
+namespace
+{
+// A box holding the member: a face's patch, a reflex edge's curve (the side of one of its
+// faces: with positive weights inside its control points' box), a corner's point.
+Box3 memberBox(const Boundary3D& boundary, const Generator3D& m)
+{
+  switch (m.kind())
+  {
+    case GeneratorKind3D::Face:
+      return boundary.faces()[m.entity()].patch.boundingBox();
+    case GeneratorKind3D::ReflexEdge:
+    {
+      const Edge3D& e = boundary.edges()[m.entity()];
+      return boundary.faces()[e.faceA].patch.side(e.sideA).boundingBox();
+    }
+    case GeneratorKind3D::ReflexCorner:
+    {
+      const Vec3& p = boundary.vertices()[m.entity()].point;
+      return Box3(p, p);
+    }
+  }
+  return Box3();
+}
+} // namespace
+
 SheetSide::SheetSide(const Boundary3D& boundary, const std::vector<Generator3D>& generators, const std::vector<int>& members)
   : B(&boundary)
 {
   for (int g : members)
     Members.push_back(&generators[g]);
   for (const Generator3D* m : Members)
-    Boxes.push_back(m->kind() == GeneratorKind3D::Face ? boundary.faces()[m->entity()].patch.boundingBox() : Box3());
+    Boxes.push_back(memberBox(boundary, *m));
   if (Members.size() > 1 && first().kind() == GeneratorKind3D::Face && !first().planar())
   {
     const BezierPatch& surface = boundary.faces()[first().entity()].patch;
@@ -161,8 +186,7 @@ int SheetSide::exitSide(const Vec2& q, double tolerance) const
   // closest-point search, and a revolved profile's annuli are cut into a hundred pieces.)
   const Vec3 x = first().evaluate(q).point;
   for (size_t k = 0; k < Members.size(); ++k)
-    if ((Members[k]->kind() != GeneratorKind3D::Face || distanceToBox(Boxes[k], x) <= tolerance) &&
-      Members[k]->exitSide(Members[k]->parameterOf(x), tolerance) < 0)
+    if (distanceToBox(Boxes[k], x) <= tolerance && Members[k]->holds(Members[k]->parameterOf(x), tolerance))
       return -1;
   return 0;
 }
@@ -188,7 +212,7 @@ size_t SheetSide::nearestMember(const Vec3& x, double& d) const
   }
   std::vector<std::pair<double, size_t>> order;
   for (size_t k = 0; k < Members.size(); ++k)
-    order.emplace_back(Members[k]->kind() == GeneratorKind3D::Face ? distanceToBox(Boxes[k], x) : 0.0, k);
+    order.emplace_back(distanceToBox(Boxes[k], x), k);
   std::sort(order.begin(), order.end());
   size_t best = order.front().second;
   d = std::numeric_limits<double>::infinity();
@@ -196,7 +220,7 @@ size_t SheetSide::nearestMember(const Vec3& x, double& d) const
   {
     if (boxDistance > d)
       break;
-    if (const double dk = Members[k]->distance(x); dk < d)
+    if (const double dk = Members[k]->distanceWithin(x, d); dk < d)
     {
       d = dk;
       best = k;

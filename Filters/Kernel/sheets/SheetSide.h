@@ -58,7 +58,7 @@ private:
   const Boundary3D* B;
   std::vector<const Generator3D*> Members;
   mutable size_t LastPiece = 0;
-  std::vector<Box3> Boxes;             ///< each face member's patch box (empty otherwise)
+  std::vector<Box3> Boxes;             ///< a box holding each member (patch, edge curve, corner point)
   std::vector<ParameterMap> PieceMaps; ///< curved members only: each piece's parameters → the first's
   Vec2 Speed = Vec2(1.0, 1.0);         ///< the side's parameters over the first's (curved members)
 };
