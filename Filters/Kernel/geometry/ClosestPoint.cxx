@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace exactmat
 {
@@ -571,48 +573,127 @@ struct PatchPolys
   double zeroU = 0.0, zeroV = 0.0;
 };
 
-PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
+// The stationarity polynomials split into what the patch alone decides and what the query
+// adds. With X the homogeneous coordinates (centred on the patch: X − c·w) and d = X − q·w,
+//   gu = Σ_k d_k·(d_k,u·w − d_k·w_u) = Σ_k X_k·A_k − Σ_k q_k·(w·A_k),  A_k = X_k,u·w − X_k·w_u
+// (the query cancels inside A), and with w constant gu = Σ_k X_k·X_k,u − Σ_k q_k·w·X_k,u:
+// the products are the patch's, a query only combines them linearly. Kept per thread for
+// the patches searched last (each is searched thousands of times along a seam or a sheet).
+struct StationarityBasis
 {
-  const int p = patch.degreeU(), r = patch.degreeV();
-  BernsteinPoly2 d[3], w(p, r);
-  for (int k = 0; k < 3; ++k)
-  {
-    d[k] = BernsteinPoly2(p, r);
-  }
+  int p = 0, r = 0;
+  std::vector<Vec4> points; ///< the patch's homogeneous control points (what the cache compares)
+  Vec3 centre = Vec3::Zero();
   bool polynomial = true;
+  BernsteinPoly2 pu, pv;         ///< Σ X_k·A_k (u and v)
+  BernsteinPoly2 qu[3], qv[3];   ///< w·A_k, at pu's and pv's degrees
+  double wMax = 0.0, wuMax = 0.0, wvMax = 0.0;
+};
+
+std::unique_ptr<StationarityBasis> stationarityBasis(const BezierPatch& patch)
+{
+  auto b = std::make_unique<StationarityBasis>();
+  const int p = patch.degreeU(), r = patch.degreeV();
+  b->p = p;
+  b->r = r;
+  b->centre = patch.boundingBox().center();
+  BernsteinPoly2 x[3], w(p, r);
+  for (int k = 0; k < 3; ++k)
+    x[k] = BernsteinPoly2(p, r);
   const double w00 = patch.homogeneousPoint(0, 0).w();
   for (int i = 0; i <= p; ++i)
-  {
     for (int j = 0; j <= r; ++j)
     {
       const Vec4& h = patch.homogeneousPoint(i, j);
+      b->points.push_back(h);
       for (int k = 0; k < 3; ++k)
-      {
-        d[k].at(i, j) = h(k) - q(k) * h.w();
-      }
+        x[k].at(i, j) = h(k) - b->centre(k) * h.w();
       w.at(i, j) = h.w();
-      polynomial = polynomial && h.w() == w00;
+      b->polynomial = b->polynomial && h.w() == w00;
     }
-  }
-  PatchPolys pp;
   const BernsteinPoly2 wu = w.derivativeU(), wv = w.derivativeV();
-  double dMax = 0.0, duMax = 0.0, dvMax = 0.0;
+  BernsteinPoly2 au[3], av[3];
   for (int k = 0; k < 3; ++k)
   {
-    const BernsteinPoly2 du = d[k].derivativeU(), dv = d[k].derivativeV();
-    const BernsteinPoly2 tu = polynomial ? d[k] * du : d[k] * (du * w - d[k] * wu);
-    const BernsteinPoly2 tv = polynomial ? d[k] * dv : d[k] * (dv * w - d[k] * wv);
-    pp.gu = (k == 0) ? tu : pp.gu + tu;
-    pp.gv = (k == 0) ? tv : pp.gv + tv;
-    dMax = std::max(dMax, d[k].maxAbs());
-    duMax = std::max(duMax, du.maxAbs());
-    dvMax = std::max(dvMax, dv.maxAbs());
+    const BernsteinPoly2 xu = x[k].derivativeU(), xv = x[k].derivativeV();
+    au[k] = b->polynomial ? xu : xu * w - x[k] * wu;
+    av[k] = b->polynomial ? xv : xv * w - x[k] * wv;
+    const BernsteinPoly2 tu = x[k] * au[k], tv = x[k] * av[k];
+    b->pu = k == 0 ? tu : b->pu + tu;
+    b->pv = k == 0 ? tv : b->pv + tv;
   }
-  const double wMax = w.maxAbs();
-  // gu = Σ d·(du·w − d·wu) (rational) or Σ d·du: rounding of each product's terms.
-  const double rational = polynomial ? 0.0 : 1.0;
-  pp.zeroU = 1e-13 * dMax * (duMax * (polynomial ? 1.0 : wMax) + rational * dMax * wu.maxAbs());
-  pp.zeroV = 1e-13 * dMax * (dvMax * (polynomial ? 1.0 : wMax) + rational * dMax * wv.maxAbs());
+  for (int k = 0; k < 3; ++k)
+  {
+    b->qu[k] = (b->polynomial ? w00 * au[k] : w * au[k]).elevatedTo(b->pu.nu, b->pu.nv);
+    b->qv[k] = (b->polynomial ? w00 * av[k] : w * av[k]).elevatedTo(b->pv.nu, b->pv.nv);
+  }
+  b->wMax = w.maxAbs();
+  b->wuMax = wu.maxAbs();
+  b->wvMax = wv.maxAbs();
+  return b;
+}
+
+const StationarityBasis& cachedStationarityBasis(const BezierPatch& patch)
+{
+  constexpr size_t Slots = 64;
+  static thread_local std::array<std::unique_ptr<StationarityBasis>, Slots> cache;
+  const int p = patch.degreeU(), r = patch.degreeV();
+  std::uint64_t hash = 1469598103934665603ull;
+  for (int i = 0; i <= p; ++i)
+    for (int j = 0; j <= r; ++j)
+      for (int k = 0; k < 4; ++k)
+      {
+        std::uint64_t bits;
+        const double v = patch.homogeneousPoint(i, j)(k);
+        std::memcpy(&bits, &v, sizeof bits);
+        hash = (hash ^ bits) * 1099511628211ull;
+      }
+  std::unique_ptr<StationarityBasis>& slot = cache[(hash ^ (hash >> 29)) % Slots];
+  auto same = [&]() {
+    if (!slot || slot->p != p || slot->r != r)
+      return false;
+    for (int i = 0, n = 0; i <= p; ++i)
+      for (int j = 0; j <= r; ++j, ++n)
+        if (slot->points[n] != patch.homogeneousPoint(i, j))
+          return false;
+    return true;
+  };
+  if (!same())
+    slot = stationarityBasis(patch);
+  return *slot;
+}
+
+PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
+{
+  const StationarityBasis& b = cachedStationarityBasis(patch);
+  const Vec3 c = q - b.centre;
+  PatchPolys pp;
+  pp.gu = b.pu;
+  pp.gv = b.pv;
+  for (size_t n = 0; n < pp.gu.c.size(); ++n)
+    pp.gu.c[n] -= c(0) * b.qu[0].c[n] + c(1) * b.qu[1].c[n] + c(2) * b.qu[2].c[n];
+  for (size_t n = 0; n < pp.gv.c.size(); ++n)
+    pp.gv.c[n] -= c(0) * b.qv[0].c[n] + c(1) * b.qv[1].c[n] + c(2) * b.qv[2].c[n];
+  // The rounding level of the direct form Σ d·(d_u·w − d·w_u), from d's control net.
+  const int p = b.p, r = b.r;
+  double dMax = 0.0, duMax = 0.0, dvMax = 0.0;
+  auto d = [&](int i, int j, int k) {
+    const Vec4& h = b.points[i * (r + 1) + j];
+    return h(k) - q(k) * h.w();
+  };
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i <= p; ++i)
+      for (int j = 0; j <= r; ++j)
+      {
+        dMax = std::max(dMax, std::abs(d(i, j, k)));
+        if (i < p)
+          duMax = std::max(duMax, p * std::abs(d(i + 1, j, k) - d(i, j, k)));
+        if (j < r)
+          dvMax = std::max(dvMax, r * std::abs(d(i, j + 1, k) - d(i, j, k)));
+      }
+  const double rational = b.polynomial ? 0.0 : 1.0;
+  pp.zeroU = 1e-13 * dMax * (duMax * (b.polynomial ? 1.0 : b.wMax) + rational * dMax * b.wuMax);
+  pp.zeroV = 1e-13 * dMax * (dvMax * (b.polynomial ? 1.0 : b.wMax) + rational * dMax * b.wvMax);
   return pp;
 }
 
