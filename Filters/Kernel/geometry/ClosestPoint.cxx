@@ -633,10 +633,13 @@ std::unique_ptr<StationarityBasis> stationarityBasis(const BezierPatch& patch)
   return b;
 }
 
-const StationarityBasis& cachedStationarityBasis(const BezierPatch& patch)
+// What a patch alone decides (Basis: p, r, points and a factory), kept per thread for the
+// last patches asked for: compared by their control points, so a hit is always the same
+// patch, whichever object holds it.
+template <class Basis, size_t Slots>
+const Basis& cachedBasis(const BezierPatch& patch, std::unique_ptr<Basis> (*make)(const BezierPatch&))
 {
-  constexpr size_t Slots = 64;
-  static thread_local std::array<std::unique_ptr<StationarityBasis>, Slots> cache;
+  static thread_local std::array<std::unique_ptr<Basis>, Slots> cache;
   const int p = patch.degreeU(), r = patch.degreeV();
   std::uint64_t hash = 1469598103934665603ull;
   for (int i = 0; i <= p; ++i)
@@ -648,7 +651,7 @@ const StationarityBasis& cachedStationarityBasis(const BezierPatch& patch)
         std::memcpy(&bits, &v, sizeof bits);
         hash = (hash ^ bits) * 1099511628211ull;
       }
-  std::unique_ptr<StationarityBasis>& slot = cache[(hash ^ (hash >> 29)) % Slots];
+  std::unique_ptr<Basis>& slot = cache[(hash ^ (hash >> 29)) % Slots];
   auto same = [&]() {
     if (!slot || slot->p != p || slot->r != r)
       return false;
@@ -659,8 +662,13 @@ const StationarityBasis& cachedStationarityBasis(const BezierPatch& patch)
     return true;
   };
   if (!same())
-    slot = stationarityBasis(patch);
+    slot = make(patch);
   return *slot;
+}
+
+const StationarityBasis& cachedStationarityBasis(const BezierPatch& patch)
+{
+  return cachedBasis<StationarityBasis, 64>(patch, stationarityBasis);
 }
 
 PatchPolys patchPolys(const BezierPatch& patch, const Vec3& q)
@@ -924,29 +932,63 @@ private:
 thread_local std::vector<std::unique_ptr<std::deque<ScratchLevel>>> ScratchLease::Sets;
 thread_local size_t ScratchLease::InUse = 0;
 
+// |S − P|²·w² = Σ_k (X_k − P_k·w)², with X centred on the patch: Σ X_k² − 2·Σ P_k·X_k·w +
+// |P|²·w², whose products are the patch's alone (as the stationarity polynomials' are).
+struct BallBasis
+{
+  int p = 0, r = 0;
+  std::vector<Vec4> points;
+  Vec3 centre = Vec3::Zero();
+  BernsteinPoly2 xx, xw[3], ww;
+};
+
+std::unique_ptr<BallBasis> ballBasis(const BezierPatch& patch)
+{
+  auto b = std::make_unique<BallBasis>();
+  const int p = patch.degreeU(), r = patch.degreeV();
+  b->p = p;
+  b->r = r;
+  b->centre = patch.boundingBox().center();
+  BernsteinPoly2 x[3], w(p, r);
+  for (int k = 0; k < 3; ++k)
+    x[k] = BernsteinPoly2(p, r);
+  for (int i = 0; i <= p; ++i)
+    for (int j = 0; j <= r; ++j)
+    {
+      const Vec4& h = patch.homogeneousPoint(i, j);
+      b->points.push_back(h);
+      for (int k = 0; k < 3; ++k)
+        x[k].at(i, j) = h(k) - b->centre(k) * h.w();
+      w.at(i, j) = h.w();
+    }
+  b->xx = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+  for (int k = 0; k < 3; ++k)
+    b->xw[k] = x[k] * w;
+  b->ww = w * w;
+  return b;
+}
+
 // |S − P|²·w² − R²·w² in Bernstein form (S = X / w the patch, P the query): negative
 // exactly where the patch enters the ball of radius R about P. `zero` receives its
 // rounding level.
 BernsteinPoly2 ballPolynomial(const BezierPatch& patch, const Vec3& query, double radius, double* zero = nullptr)
 {
-  const int p = patch.degreeU(), q = patch.degreeV();
-  BernsteinPoly2 d[3], w(p, q);
-  for (int k = 0; k < 3; ++k)
-    d[k] = BernsteinPoly2(p, q);
-  for (int i = 0; i <= p; ++i)
+  const BallBasis& b = cachedBasis<BallBasis, 128>(patch, ballBasis);
+  const Vec3 c = query - b.centre;
+  const double cc = c.squaredNorm(), rr = radius * radius;
+  BernsteinPoly2 ball = b.xx;
+  double squaresMax = 0.0, wwMax = 0.0;
+  for (size_t n = 0; n < ball.c.size(); ++n)
   {
-    for (int j = 0; j <= q; ++j)
-    {
-      const Vec4& hp = patch.homogeneousPoint(i, j);
-      for (int k = 0; k < 3; ++k)
-        d[k].at(i, j) = hp(k) - query(k) * hp.w();
-      w.at(i, j) = hp.w();
-    }
+    const double squares =
+      b.xx.c[n] - 2.0 * (c(0) * b.xw[0].c[n] + c(1) * b.xw[1].c[n] + c(2) * b.xw[2].c[n]) + cc * b.ww.c[n];
+    squaresMax = std::max(squaresMax, std::abs(squares));
+    wwMax = std::max(wwMax, std::abs(b.ww.c[n]));
+    ball.c[n] = squares - rr * b.ww.c[n];
   }
-  const BernsteinPoly2 squares = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], ball = (radius * radius) * (w * w);
   if (zero)
-    *zero = 1e-12 * (squares.maxAbs() + ball.maxAbs());
-  return squares - ball;
+    *zero = 1e-12 * (squaresMax + rr * wwMax);
+  return ball;
 }
 
 // The ball polynomial's stand-in for a box wholly inside the ball (PatchSearch::search).
