@@ -573,59 +573,82 @@ struct PatchPolys
   double zeroU = 0.0, zeroV = 0.0;
 };
 
+// What identifies a patch to the caches below (its homogeneous control points) and the
+// centre the bases are expressed about.
+struct PatchKey
+{
+  int p = 0, r = 0;
+  std::vector<Vec4> points;
+  Vec3 centre = Vec3::Zero();
+};
+
+// The patch's homogeneous coordinates centred on it (X − c·w) and its weights, as Bernstein
+// polynomials: what the bases are built from.
+struct CentredCoordinates : PatchKey
+{
+  BernsteinPoly2 x[3], w;
+  bool polynomial = true; ///< all weights equal
+};
+
+CentredCoordinates centredCoordinates(const BezierPatch& patch)
+{
+  CentredCoordinates c;
+  c.p = patch.degreeU();
+  c.r = patch.degreeV();
+  c.centre = patch.boundingBox().center();
+  for (int k = 0; k < 3; ++k)
+    c.x[k] = BernsteinPoly2(c.p, c.r);
+  c.w = BernsteinPoly2(c.p, c.r);
+  const double w00 = patch.homogeneousPoint(0, 0).w();
+  for (int i = 0; i <= c.p; ++i)
+    for (int j = 0; j <= c.r; ++j)
+    {
+      const Vec4& h = patch.homogeneousPoint(i, j);
+      c.points.push_back(h);
+      for (int k = 0; k < 3; ++k)
+        c.x[k].at(i, j) = h(k) - c.centre(k) * h.w();
+      c.w.at(i, j) = h.w();
+      c.polynomial = c.polynomial && h.w() == w00;
+    }
+  return c;
+}
+
 // The stationarity polynomials split into what the patch alone decides and what the query
 // adds. With X the homogeneous coordinates (centred on the patch: X − c·w) and d = X − q·w,
 //   gu = Σ_k d_k·(d_k,u·w − d_k·w_u) = Σ_k X_k·A_k − Σ_k q_k·(w·A_k),  A_k = X_k,u·w − X_k·w_u
 // (the query cancels inside A), and with w constant gu = Σ_k X_k·X_k,u − Σ_k q_k·w·X_k,u:
 // the products are the patch's, a query only combines them linearly. Kept per thread for
 // the patches searched last (each is searched thousands of times along a seam or a sheet).
-struct StationarityBasis
+struct StationarityBasis : PatchKey
 {
-  int p = 0, r = 0;
-  std::vector<Vec4> points; ///< the patch's homogeneous control points (what the cache compares)
-  Vec3 centre = Vec3::Zero();
   bool polynomial = true;
-  BernsteinPoly2 pu, pv;         ///< Σ X_k·A_k (u and v)
-  BernsteinPoly2 qu[3], qv[3];   ///< w·A_k, at pu's and pv's degrees
+  BernsteinPoly2 pu, pv;       ///< Σ X_k·A_k (u and v)
+  BernsteinPoly2 qu[3], qv[3]; ///< w·A_k, at pu's and pv's degrees
   double wMax = 0.0, wuMax = 0.0, wvMax = 0.0;
 };
 
 std::unique_ptr<StationarityBasis> stationarityBasis(const BezierPatch& patch)
 {
+  const CentredCoordinates c = centredCoordinates(patch);
   auto b = std::make_unique<StationarityBasis>();
-  const int p = patch.degreeU(), r = patch.degreeV();
-  b->p = p;
-  b->r = r;
-  b->centre = patch.boundingBox().center();
-  BernsteinPoly2 x[3], w(p, r);
-  for (int k = 0; k < 3; ++k)
-    x[k] = BernsteinPoly2(p, r);
-  const double w00 = patch.homogeneousPoint(0, 0).w();
-  for (int i = 0; i <= p; ++i)
-    for (int j = 0; j <= r; ++j)
-    {
-      const Vec4& h = patch.homogeneousPoint(i, j);
-      b->points.push_back(h);
-      for (int k = 0; k < 3; ++k)
-        x[k].at(i, j) = h(k) - b->centre(k) * h.w();
-      w.at(i, j) = h.w();
-      b->polynomial = b->polynomial && h.w() == w00;
-    }
-  const BernsteinPoly2 wu = w.derivativeU(), wv = w.derivativeV();
+  static_cast<PatchKey&>(*b) = c;
+  b->polynomial = c.polynomial;
+  const BernsteinPoly2 &w = c.w, wu = w.derivativeU(), wv = w.derivativeV();
+  const double w00 = c.points.front().w();
   BernsteinPoly2 au[3], av[3];
   for (int k = 0; k < 3; ++k)
   {
-    const BernsteinPoly2 xu = x[k].derivativeU(), xv = x[k].derivativeV();
-    au[k] = b->polynomial ? xu : xu * w - x[k] * wu;
-    av[k] = b->polynomial ? xv : xv * w - x[k] * wv;
-    const BernsteinPoly2 tu = x[k] * au[k], tv = x[k] * av[k];
+    const BernsteinPoly2 xu = c.x[k].derivativeU(), xv = c.x[k].derivativeV();
+    au[k] = c.polynomial ? xu : xu * w - c.x[k] * wu;
+    av[k] = c.polynomial ? xv : xv * w - c.x[k] * wv;
+    const BernsteinPoly2 tu = c.x[k] * au[k], tv = c.x[k] * av[k];
     b->pu = k == 0 ? tu : b->pu + tu;
     b->pv = k == 0 ? tv : b->pv + tv;
   }
   for (int k = 0; k < 3; ++k)
   {
-    b->qu[k] = (b->polynomial ? w00 * au[k] : w * au[k]).elevatedTo(b->pu.nu, b->pu.nv);
-    b->qv[k] = (b->polynomial ? w00 * av[k] : w * av[k]).elevatedTo(b->pv.nu, b->pv.nv);
+    b->qu[k] = (c.polynomial ? w00 * au[k] : w * au[k]).elevatedTo(b->pu.nu, b->pu.nv);
+    b->qv[k] = (c.polynomial ? w00 * av[k] : w * av[k]).elevatedTo(b->pv.nu, b->pv.nv);
   }
   b->wMax = w.maxAbs();
   b->wuMax = wu.maxAbs();
@@ -934,37 +957,20 @@ thread_local size_t ScratchLease::InUse = 0;
 
 // |S − P|²·w² = Σ_k (X_k − P_k·w)², with X centred on the patch: Σ X_k² − 2·Σ P_k·X_k·w +
 // |P|²·w², whose products are the patch's alone (as the stationarity polynomials' are).
-struct BallBasis
+struct BallBasis : PatchKey
 {
-  int p = 0, r = 0;
-  std::vector<Vec4> points;
-  Vec3 centre = Vec3::Zero();
   BernsteinPoly2 xx, xw[3], ww;
 };
 
 std::unique_ptr<BallBasis> ballBasis(const BezierPatch& patch)
 {
+  const CentredCoordinates c = centredCoordinates(patch);
   auto b = std::make_unique<BallBasis>();
-  const int p = patch.degreeU(), r = patch.degreeV();
-  b->p = p;
-  b->r = r;
-  b->centre = patch.boundingBox().center();
-  BernsteinPoly2 x[3], w(p, r);
+  static_cast<PatchKey&>(*b) = c;
+  b->xx = c.x[0] * c.x[0] + c.x[1] * c.x[1] + c.x[2] * c.x[2];
   for (int k = 0; k < 3; ++k)
-    x[k] = BernsteinPoly2(p, r);
-  for (int i = 0; i <= p; ++i)
-    for (int j = 0; j <= r; ++j)
-    {
-      const Vec4& h = patch.homogeneousPoint(i, j);
-      b->points.push_back(h);
-      for (int k = 0; k < 3; ++k)
-        x[k].at(i, j) = h(k) - b->centre(k) * h.w();
-      w.at(i, j) = h.w();
-    }
-  b->xx = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-  for (int k = 0; k < 3; ++k)
-    b->xw[k] = x[k] * w;
-  b->ww = w * w;
+    b->xw[k] = c.x[k] * c.w;
+  b->ww = c.w * c.w;
   return b;
 }
 
