@@ -23,13 +23,15 @@
  *
  * Solids (vtkMAT25DFilter), point data: `Radius`; `PointType` (int, see
  * exactmat::MedialPoint3DType: 0 sheet, 1 seam, 2 junction, 3 seam end, 4 skeletal edge,
- * 5 on a convex edge or vertex of the solid, 6 centre of a ball touching a circle);
+ * 5 on a convex edge or vertex of the solid, 6 centre of a ball touching a circle, 7 centre
+ * of a ball touching the whole boundary: a sphere's MAT);
  * `Touchpoints` (int: distinct touching points of the ball by construction, 0 = not
  * finite); vtkMAT3DFilter also `Footpoint0`, `Footpoint1`, `Footpoint2` (3-vectors: the
  * ball's touchpoints — a seam point's three, a junction's first three, the vertex on a rim
  * or at radius 0). Cell data: `ElementType` (int, see exactmat::MedialElementType: 0 junction,
  * 1 seam, 2 skeletal edge, 3 centre curve, 4 swept sheet, 5 profile sheet, 6 mid-sheet,
- * 7 sheet of a free-form solid),
+ * 7 sheet of a free-form solid, 8 a ball's centre, as a vertex cell: the whole MAT of a
+ * sphere),
  * `ElementId`
  * (int: the element a cell belongs to), `SegmentId` (the profile MAT segment or node it
  * comes from), `Governors` (string: the boundary entities it is equidistant to, e.g.

@@ -81,6 +81,10 @@ void vtkMAT3DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   result.count("NumberOfSeams", static_cast<int>(mat.seams.size()));
   result.count("NumberOfSkeletalEdges", static_cast<int>(mat.skeletalEdges.size()));
   result.count("NumberOfCentreCurves", static_cast<int>(mat.centreCurves.size()));
+  result.count("NumberOfSphereCentres",
+    static_cast<int>(std::count_if(mat.nodes.begin(), mat.nodes.end(), [](const exactmat::MAT3DNode& n) {
+      return n.sphereCentre;
+    })));
   result.count("NumberOfSheets", static_cast<int>(mat.sheets.size()));
   // The sheets' topology, for vtkSheetInterpolator: face pair and bounding elements.
   vtkNew<vtkStringArray> sheetGovernors, sheetSeams, sheetEdges;
@@ -134,6 +138,7 @@ void vtkMAT3DFilter::PublishFigures(const exactmat::PartResult& figures)
   this->NumberOfSeams = static_cast<int>(figures.get("NumberOfSeams"));
   this->NumberOfSkeletalEdges = static_cast<int>(figures.get("NumberOfSkeletalEdges"));
   this->NumberOfCentreCurves = static_cast<int>(figures.get("NumberOfCentreCurves"));
+  this->NumberOfSphereCentres = static_cast<int>(figures.get("NumberOfSphereCentres"));
   this->NumberOfSheets = static_cast<int>(figures.get("NumberOfSheets"));
   this->NumberOfVerifiedPoints = static_cast<int>(figures.get("NumberOfVerifiedPoints"));
   this->NumberOfTouchpointMismatches =
@@ -156,5 +161,6 @@ void vtkMAT3DFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSeams: " << this->NumberOfSeams << "\n";
   os << indent << "NumberOfSkeletalEdges: " << this->NumberOfSkeletalEdges << "\n";
   os << indent << "NumberOfCentreCurves: " << this->NumberOfCentreCurves << "\n";
+  os << indent << "NumberOfSphereCentres: " << this->NumberOfSphereCentres << "\n";
   os << indent << "NumberOfTopologyProblems: " << this->NumberOfTopologyProblems << "\n";
 }

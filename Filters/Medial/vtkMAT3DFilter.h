@@ -30,13 +30,18 @@
  * Radius, the number of touchpoints); a failure warns, sets VerificationPassed false and
  * the output's field data (`VerificationStatus`, `VerificationReport`).
  *
+ * Besides seams and junctions: skeletal edges (rims of curved faces, where a ball
+ * osculates a ridge: the ellipsoid; and where the sheet of two reflex edges closes at their
+ * corner), centre curves (balls touching a whole circle: a cylinder's axis, a torus' core)
+ * and, for a ball, its centre alone (`PointType` 7, `ElementType` 8 vertex cell: every face
+ * on one sphere). The sheets themselves are filled by vtkSheetInterpolator.
+ *
  * @warning Supported today: solids with convex, reflex and smooth edges and reflex corners
  * that have a vertex with a convex edge — polyhedra (notched, stepped, staircases) and
- * free-form solids such as the catalogue's pillow; rims where the sheet of two reflex edges
- * closes at their corner are output as skeletal edges. Skeletal edges of curved faces (the
- * curvature criterion), solids without a vertex with a convex edge (ellipsoid, cylinder,
- * torus) and the medial sheets (vtkSheetInterpolator) are not yet: the filter fails with an
- * error naming the face or edge, never with a partial MAT.
+ * free-form solids such as the catalogue's pillow — and the rims, circles and spheres
+ * above. Not yet: rims that meet seams (fin points), fillets, solids whose seams no vertex,
+ * rim or circle leads to (see the README's limits): the filter fails with an error naming
+ * the face or edge, never with a partial MAT.
  */
 #ifndef vtkMAT3DFilter_h
 #define vtkMAT3DFilter_h
@@ -87,6 +92,8 @@ public:
   /// Curves of centres of balls touching a face along a whole circle: a cylinder's axis,
   /// a torus' core (CentreCurve polylines of CircleCentre points).
   vtkGetMacro(NumberOfCentreCurves, int);
+  /// Parts that are balls (every face on one sphere): their MAT is the centre alone.
+  vtkGetMacro(NumberOfSphereCentres, int);
   /// Nodes of the seam graph with the wrong number of seams (a junction of four touchpoints
   /// meets four): the graph's own check, part of the verification (0 when it passes).
   vtkGetMacro(NumberOfTopologyProblems, int);
@@ -119,6 +126,7 @@ protected:
   int NumberOfSeams = 0;
   int NumberOfSkeletalEdges = 0;
   int NumberOfCentreCurves = 0;
+  int NumberOfSphereCentres = 0;
   int NumberOfTopologyProblems = 0;
   int NumberOfSheets = 0;
   int NumberOfVerifiedPoints = 0;

@@ -855,7 +855,12 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   figures.coverage = 0.0;
   std::string uncovered;
   int uncoveredFaces = 0;
-  const std::vector<double> footprints = centreCurveFootprints(boundary, generators, centreCurveTouches(complex));
+  // (What centre curves' circles cover counts, and a ball's centre covers its whole sphere.)
+  std::vector<double> footprints = centreCurveFootprints(boundary, generators, centreCurveTouches(complex));
+  const std::vector<double> ball = sphereCentreFootprints(boundary, complex, 1e-9 * boundary.diagonal());
+  footprints.resize(ball.size(), 0.0);
+  for (size_t f = 0; f < ball.size(); ++f)
+    footprints[f] += ball[f];
   for (const FaceCoverage& c : sheetCoverage(boundary, meshes, footprints))
   {
     figures.coverage = std::max(figures.coverage, c.shortfall());

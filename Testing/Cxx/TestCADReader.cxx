@@ -7,6 +7,7 @@
 #include "vtkMAT2DFilter.h"
 #include "vtkMAT3DFilter.h"
 #include "vtkNURBSSource.h"
+#include "vtkSheetInterpolator.h"
 
 #include "OCCTTestParts.h"
 #include "TestHelpers.h"
@@ -523,6 +524,55 @@ TEST(vtkCADBoundaryReader, BoxMATIsTheCatalogueBoxMAT)
     vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("TranslatorMessages"));
   ASSERT_NE(messages, nullptr);
   EXPECT_EQ(messages->GetNumberOfValues(), 0);
+}
+
+TEST(vtkCADBoundaryReader, SphereMATIsItsCentre)
+{
+  // OpenCASCADE's sphere (radius 1.5 about (0.5, 0, 0)), from STEP and from IGES: its MAT is
+  // its centre alone — one SphereCentre vertex of radius 1.5 — and the sheet interpolator,
+  // with no sheet to fill, finds every face covered by that one ball.
+  const TopoDS_Shape sphere = BRepPrimAPI_MakeSphere(gp_Pnt(0.5, 0, 0), 1.5).Shape();
+  for (const std::string ext : { ".step", ".igs" })
+  {
+    SCOPED_TRACE(ext);
+    const std::string file = output("cad-mat-sphere" + ext);
+    if (ext == ".step")
+      writeStep(sphere, file);
+    else
+      writeIges(sphere, file);
+    vtkNew<vtkCADBoundaryReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkMAT3DFilter> mat;
+    mat->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkSheetInterpolator> sheets;
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceConnection(reader->GetOutputPort());
+    auto errors = ErrorRecorder::watch(sheets);
+    auto matErrors = ErrorRecorder::watch(mat);
+    sheets->Update();
+    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
+    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    EXPECT_TRUE(mat->GetVerificationPassed());
+    EXPECT_EQ(mat->GetNumberOfSphereCentres(), 1);
+    EXPECT_EQ(mat->GetNumberOfJunctions(), 0);
+    EXPECT_EQ(mat->GetNumberOfSeams(), 0);
+    vtkPolyData* out = mat->GetOutput();
+    ASSERT_EQ(out->GetNumberOfPoints(), 1);
+    ASSERT_EQ(out->GetNumberOfVerts(), 1);
+    EXPECT_EQ(out->GetNumberOfCells(), 1);
+    double x[3];
+    out->GetPoint(0, x);
+    EXPECT_NEAR(x[0], 0.5, 1e-12);
+    EXPECT_NEAR(x[1], 0.0, 1e-12);
+    EXPECT_NEAR(x[2], 0.0, 1e-12);
+    EXPECT_NEAR(out->GetPointData()->GetArray(arrays::Radius)->GetTuple1(0), 1.5, 1e-12);
+    EXPECT_EQ(out->GetPointData()->GetArray(arrays::PointType)->GetTuple1(0), 7);
+    EXPECT_EQ(out->GetCellData()->GetArray(arrays::ElementType)->GetTuple1(0), 8);
+    EXPECT_TRUE(sheets->GetVerificationPassed());
+    EXPECT_EQ(sheets->GetNumberOfSheets(), 0);
+    EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-12);
+    EXPECT_EQ(sheets->GetOutput()->GetNumberOfVerts(), 1);
+  }
 }
 
 TEST(vtkCADBoundaryReader, PlanarFaceMATIsTheCatalogueMAT)

@@ -15,6 +15,8 @@
 #include "shapes/Primitives.h"
 #include "EllipsoidMAT.h"
 #include "shapes/RandomShapes.h"
+#include "sheets/SheetCoverage.h"
+#include "sheets/CentreCurveFootprint.h"
 
 #include <gtest/gtest.h>
 
@@ -383,12 +385,14 @@ TEST(MAT3D, UnsupportedSolidsAreRefusedByName)
     }
     return std::string("no error");
   };
-  // A sphere (every point an umbilic: its MAT is the centre, one ball touching all of it):
-  // no rim, no vertex, no circle of contact.
-  EXPECT_NE(message(patchPieces(ellipsoidSurfaces(Vec3(1, 1, 1), M_PI / 6, 2)))
-              .find("no convex vertex, no rim and no circle of contact"),
-    std::string::npos);
-
+  // A hollow ball (a spherical cavity inside a sphere, every point an umbilic: its MAT is
+  // the sphere midway, one sheet, no seam): no rim, no vertex, no circle of contact, and
+  // not a ball (ABallsMATIsItsCentre).
+  std::vector<PatchPiece> hollow = patchPieces(ellipsoidSurfaces(Vec3(2, 2, 2), M_PI / 6, 2));
+  for (const PatchPiece& p : patchPieces(ellipsoidSurfaces(Vec3(1, 1, 1), 0.3, 1)))
+    hollow.push_back(p);
+  EXPECT_NE(message(hollow).find("no convex vertex, no rim and no circle of contact"), std::string::npos)
+    << message(hollow);
 }
 
 // A cylinder of radius R shorter than its diameter (length 2h < 2R): its MAT is the disk
@@ -515,6 +519,83 @@ TEST(MAT3D, EllipsoidIsOneRimInClosedForm)
     if (!c.moved && c.polar == shortest)
     {
       EXPECT_LE(v.maxOsculationError, MedialVerification::OsculationTolerance) << what.str();
+    }
+  }
+}
+
+// A ball: no convex vertex, no rim (every point is umbilic), no circle of contact — its MAT
+// is its centre alone, radius R, one ball touching every face. Found however the sphere is
+// cut into patches and wherever it sits (turned, scaled 1e-3 … 1e4, moved far, weights
+// × 1e-50 … 1e20); the centre's distance verified, its ball covering every face. Not a ball
+// when one control point moves by 1e-7 of the size (nor an oblate spheroid 1e-3 off).
+TEST(MAT3D, ABallsMATIsItsCentre)
+{
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  struct Case
+  {
+    double cut;
+    int polar;
+    Placement placed;
+  };
+  std::vector<Case> cases{ { M_PI / 6, 2, {} }, { 0.0, 0, {} }, { -0.35, 1, {} } };
+  cases.push_back({ 0.2, 2, farFromTheOrigin() });
+  cases.push_back({ 0.0, 1, { turn, 1e4, Vec3(-3e8, 1e8, 2e7), 1e-50 } });
+  for (const Case& c : cases)
+  {
+    std::ostringstream what;
+    what << "cut " << c.cut << ", poles on axis " << c.polar << ", scale " << c.placed.scale;
+    const Traced t = trace(movedPieces(patchPieces(ellipsoidSurfaces(Vec3(1.5, 1.5, 1.5), c.cut, c.polar)), c.placed));
+    ASSERT_EQ(t.mat.nodes.size(), 1u) << what.str();
+    EXPECT_TRUE(t.mat.nodes.front().sphereCentre) << what.str();
+    EXPECT_TRUE(t.mat.seams.empty() && t.mat.skeletalEdges.empty() && t.mat.centreCurves.empty()) << what.str();
+    EXPECT_EQ(t.mat.junctionCount(), 0) << what.str();
+    const Normalisation& frame = t.boundary->userFrame();
+    const Vec3 centre = unplaced(c.placed, frame.toUser(t.mat.nodes.front().ball.x));
+    const double radius = frame.lengthToUser(t.mat.nodes.front().ball.r) / c.placed.scale;
+    EXPECT_LE(centre.norm(), 1e-12 * 3.0 + 64.0 * frame.inputRounding() * 3.0) << what.str();
+    EXPECT_NEAR(radius, 1.5, 1e-12 + 64.0 * frame.inputRounding() * 3.0) << what.str();
+    const MedialComplex complex = t.mat.complex();
+    // (Its ball touches a continuum: the distance is checked, no count of touchpoints.)
+    const MedialVerification v = verifyMedialComplex(PatchBoundary(*t.boundary), complex, 1,
+      std::max(1e-15, 64.0 * frame.inputRounding()));
+    EXPECT_EQ(v.points, 1) << what.str();
+    EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what.str();
+    EXPECT_TRUE(v.ok(VerifiedDistanceTolerance)) << what.str();
+    EXPECT_TRUE(topologyProblems(t).empty()) << what.str();
+    ASSERT_EQ(complex.points.size(), 1u);
+    EXPECT_EQ(complex.points.front().type, MedialPoint3DType::SphereCentre);
+    ASSERT_EQ(complex.elements.size(), 1u);
+    EXPECT_EQ(complex.elements.front().type, MedialElementType::SphereCentre);
+    EXPECT_EQ(complex.elements.front().governors.size(), t.boundary->faces().size());
+    // The coverage check's own test: the centre's ball covers every face, wholly.
+    const std::vector<double> covered = sphereCentreFootprints(*t.boundary, complex, 1e-9 * t.boundary->diagonal());
+    for (const FaceCoverage& f : sheetCoverage(*t.boundary, {}, covered))
+      EXPECT_LE(f.shortfall(), 1e-12) << what.str() << ": face " << f.face;
+    // …and not a ball that is smaller, or off centre.
+    MedialComplex off = complex;
+    off.points.front().radius *= 1.0 + 1e-8;
+    for (double a : sphereCentreFootprints(*t.boundary, off, 1e-9 * t.boundary->diagonal()))
+      EXPECT_EQ(a, 0.0) << what.str();
+  }
+  // One inner control point of one patch moved outwards by 1e-7 of the size: not a ball.
+  std::vector<PatchPiece> dented = patchPieces(ellipsoidSurfaces(Vec3(1.5, 1.5, 1.5), 0.0, 2));
+  {
+    Vec4List net = dented.front().patch.homogeneousNet();
+    Vec4& p = net[1 * (dented.front().patch.degreeV() + 1) + 1];
+    p.head<3>() += 1e-7 * 5.2 * p.w() * p.head<3>().normalized();
+    dented.front().patch = BezierPatch(dented.front().patch.degreeU(), dented.front().patch.degreeV(), net);
+  }
+  for (const std::vector<PatchPiece>& notABall :
+    { dented, patchPieces(ellipsoidSurfaces(Vec3(1.5, 1.5, 1.4985), 0.0, 2)) })
+  {
+    try
+    {
+      const Traced t = trace(notABall);
+      for (const MAT3DNode& n : t.mat.nodes)
+        EXPECT_FALSE(n.sphereCentre);
+    }
+    catch (const InputError&)
+    {
     }
   }
 }

@@ -827,6 +827,9 @@ int run3D(const Arguments& a)
   std::printf("  seams               %d\n", mat->GetNumberOfSeams());
   std::printf("  skeletal edges      %d (rims: where sheets end inside the solid)\n", mat->GetNumberOfSkeletalEdges());
   std::printf("  centre curves       %d (axes: balls touching a whole circle)\n", mat->GetNumberOfCentreCurves());
+  if (mat->GetNumberOfSphereCentres() > 0)
+    std::printf("  sphere centre       %d (the solid is a ball: its MAT is the centre, touching every face)\n",
+      mat->GetNumberOfSphereCentres());
   if (!a.sheets)
     std::printf("  sheets              %d (generator pairs and their bounding seams; not filled: --no-sheets)\n",
       mat->GetNumberOfSheets());
@@ -870,6 +873,7 @@ int run3D(const Arguments& a)
       count(mat->GetNumberOfSeams(), "seam") +
       (mat->GetNumberOfSkeletalEdges() > 0 ? ", " + count(mat->GetNumberOfSkeletalEdges(), "rim") : std::string()) +
       (mat->GetNumberOfCentreCurves() > 0 ? ", " + count(mat->GetNumberOfCentreCurves(), "centre curve") : std::string()) +
+      (mat->GetNumberOfSphereCentres() > 0 ? std::string(", the ball's centre") : std::string()) +
       (a.sheets ? ", " + count(sheets->GetNumberOfInterpolatedSheets(), "sheet") : std::string(" (sheets not filled)"));
     if (!writeSolidMATPicture(solid, out, a.png, title, error))
     {

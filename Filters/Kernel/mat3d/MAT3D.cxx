@@ -4,6 +4,7 @@
 #include "common/InputError.h"
 #include "geometry/BoundingVolumeHierarchy.h"
 #include "geometry/ClosestPoint.h"
+#include "mat3d/BoundarySphere.h"
 #include "mat3d/CentreCurve.h"
 #include "mat3d/Rim.h"
 
@@ -116,6 +117,7 @@ private:
   void startFrom(int node);
   void addRims();
   void addCentreCurves();
+  bool addSphereCentre();
   void prepare(FaceCurveSearch& search) const;
   bool emptyOfAll(const Vec3& x, double r) const { return enteringFace(x, r) < 0; }
   int enteringFace(const Vec3& x, double r) const;
@@ -2217,6 +2219,32 @@ void Tracer::addCentreCurves()
   }
 }
 
+// A ball (every face on one sphere: BoundarySphere.h) has no seam, rim or centre curve:
+// its MAT is its centre, one node whose ball touches every face (recorded at each face's
+// middle). The faces are held to the sphere within what the input is known to.
+bool Tracer::addSphereCentre()
+{
+  const std::optional<BoundarySphere> sphere = boundarySphere(B, std::max(Solve, Degenerate));
+  if (!sphere)
+    return false;
+  MAT3DNode node;
+  node.sphereCentre = true;
+  node.ball.x = sphere->centre;
+  node.ball.r = sphere->radius;
+  for (int f = 0; f < static_cast<int>(B.faces().size()); ++f)
+  {
+    node.ball.generators.push_back(f);
+    node.ball.q.push_back(Vec2(0.5, 0.5));
+    node.ball.touches.push_back(Generators[f].evaluate(Vec2(0.5, 0.5)).point);
+  }
+  Result.nodes.push_back(std::move(node));
+  for (const Generator3D& g : Generators)
+    Result.generators.push_back({ g.kind(), g.entity(), g.faces() });
+  if (Options.progress)
+    Options.progress(1.0);
+  return true;
+}
+
 // The rims of the curved faces (Rim.h). A closed rim is a skeletal edge from and to a
 // point of its own (a loop point, as a closed seam has); a rim that ends — on a seam, at a
 // fin point, or at a sharp edge — is refused: rims meeting seams are not traced yet.
@@ -2272,6 +2300,10 @@ MAT3D Tracer::run()
     ball.r = 0.0;
     addNode(ball, v);
   }
+  // (A ball before its rims and circles: every point of a sphere is umbilic, where the
+  // principal directions those searches follow are undefined.)
+  if (Result.nodes.empty() && addSphereCentre())
+    return std::move(Result);
   addRims();
   addCentreCurves();
   if (Result.nodes.empty())
@@ -2469,6 +2501,12 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
     // at least two); a seam's end on a rim joins one seam and one rim; a vertex starts at
     // least one.
     // (A centre curve's end: at least that curve.)
+    if (node.sphereCentre)
+    {
+      if (degree[n] != 0 || nodes.size() != 1)
+        problems.push_back("the ball's centre at " + format(toUser(node.ball.x)) + " is not the whole MAT");
+      continue;
+    }
     if (node.circleEnd)
     {
       if (degree[n] < 1)
@@ -2496,7 +2534,9 @@ std::vector<std::string> MAT3D::topologyProblems(const std::function<Vec3(const 
 int MAT3D::junctionCount() const
 {
   return static_cast<int>(
-    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) { return n.vertex < 0 && !n.seamEnd && !n.loopPoint && !n.circleEnd; }));
+    std::count_if(nodes.begin(), nodes.end(), [](const MAT3DNode& n) {
+      return n.vertex < 0 && !n.seamEnd && !n.loopPoint && !n.circleEnd && !n.sphereCentre;
+    }));
 }
 
 MedialComplex MAT3D::complex() const
@@ -2507,14 +2547,24 @@ MedialComplex MAT3D::complex() const
     MedialPoint3D p;
     p.x = n.ball.x;
     p.radius = n.ball.r;
-    p.type = n.circleEnd                ? MedialPoint3DType::CircleCentre
+    p.type = n.sphereCentre             ? MedialPoint3DType::SphereCentre
+      : n.circleEnd                ? MedialPoint3DType::CircleCentre
       : n.loopPoint                ? (n.touchpoints == 1 ? MedialPoint3DType::SkeletalEdge : MedialPoint3DType::Seam)
       : n.vertex >= 0 || n.seamEnd ? MedialPoint3DType::SeamEnd
                                    : MedialPoint3DType::Junction;
     // (A ball touching a whole circle has no count of touchpoints: its distance is checked.)
-    p.contacts = n.vertex >= 0 || n.circleEnd ? 0 : n.touchpoints;
+    p.contacts = n.vertex >= 0 || n.circleEnd || n.sphereCentre ? 0 : n.touchpoints;
     p.touches = n.ball.touches;
     c.points.push_back(p);
+    if (n.sphereCentre)
+    {
+      MedialElement e;
+      e.type = MedialElementType::SphereCentre;
+      e.points = { static_cast<int>(c.points.size()) - 1 };
+      e.governors = n.ball.generators;
+      c.elements.push_back(e);
+      continue;
+    }
     if (n.vertex < 0 && !n.seamEnd && !n.loopPoint && !n.circleEnd)
     {
       MedialElement e;

@@ -23,7 +23,7 @@
 /// Supported today: solids with at least one convex edge ending at a vertex (polyhedra,
 /// stepped and notched blocks, free-form solids such as the pillow), closed rims of curved
 /// faces (Rim.h: the ellipsoid) and centre curves of canal faces (CentreCurve.h: a
-/// cylinder's axis, a torus' core). Rims that meet seams (fin points), a face touching one
+/// cylinder's axis, a torus' core), and a ball (the sphere's centre). Rims that meet seams (fin points), a face touching one
 /// ball twice, seams reaching the end of a reflex edge at a corner that also has convex
 /// edges, and seams no vertex leads to on curved solids are reported as InputError naming
 /// what is missing, never traced wrongly.
@@ -72,6 +72,10 @@ struct MAT3DNode
   /// curve was stopped by it, another entity: a cone sheet's apex), or a point of a closed
   /// centre curve (loopPoint too).
   bool circleEnd = false;
+  /// The centre of a ball that is the whole solid (every face on one sphere: BoundarySphere.h):
+  /// the MAT is this one point, its ball touching every face everywhere (generators: every
+  /// face, each at its middle).
+  bool sphereCentre = false;
   int touchpoints = 0;   ///< distinct points the ball touches (a point touched by two faces once)
   Vec3List directions;   ///< unit directions of the seams leaving / arriving, away from it
 };
@@ -146,7 +150,8 @@ struct MAT3D
   /// Points and elements: a Junction element per junction, a Seam polyline per seam
   /// (sharing the node points), governors = the seam's start triplet of generators; a
   /// SkeletalEdge polyline per skeletal edge (governors: the merged pair); a CentreCurve
-  /// polyline of CircleCentre points per centre curve (governors: the faces it touches).
+  /// polyline of CircleCentre points per centre curve (governors: the faces it touches); a
+  /// SphereCentre element of one SphereCentre point for a ball's centre (governors: every face).
   MedialComplex complex() const;
 };
 

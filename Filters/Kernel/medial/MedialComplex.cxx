@@ -26,6 +26,8 @@ const char* toString(MedialPoint3DType type)
       return "convex-edge";
     case MedialPoint3DType::CircleCentre:
       return "circle-centre";
+    case MedialPoint3DType::SphereCentre:
+      return "sphere-centre";
   }
   return "?";
 }
@@ -50,6 +52,8 @@ const char* toString(MedialElementType type)
       return "mid-sheet";
     case MedialElementType::Sheet:
       return "sheet";
+    case MedialElementType::SphereCentre:
+      return "sphere-centre";
   }
   return "?";
 }
@@ -60,6 +64,8 @@ int priority(MedialPoint3DType t)
 {
   switch (t)
   {
+    case MedialPoint3DType::SphereCentre:
+      return 7;
     case MedialPoint3DType::Junction:
       return 6;
     case MedialPoint3DType::SeamEnd:

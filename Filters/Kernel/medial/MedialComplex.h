@@ -23,7 +23,8 @@ enum class MedialPoint3DType
   SkeletalEdge = 4, ///< one touchpoint of higher order: a centre of curvature of a point
                     ///< of maximal curvature (the ball osculates the boundary)
   ConvexEdge = 5,   ///< radius 0: a sheet's border on a convex edge of the solid
-  CircleCentre = 6  ///< the ball touches a whole circle (axis of a cylinder, torus core)
+  CircleCentre = 6, ///< the ball touches a whole circle (axis of a cylinder, torus core)
+  SphereCentre = 7  ///< the ball touches the whole boundary: the MAT of a ball is its centre
 };
 
 const char* toString(MedialPoint3DType type);
@@ -37,7 +38,8 @@ enum class MedialElementType
   SweptSheet = 4,    ///< triangles: a profile MAT segment swept between its seams
   ProfileSheet = 5,  ///< triangles: between a profile face and one side (or reflex edge)
   MidSheet = 6,      ///< triangles: between the two profile faces (spans < 2·Rmax)
-  Sheet = 7          ///< triangles: a free-form solid's sheet between a generator pair (sheets/)
+  Sheet = 7,         ///< triangles: a free-form solid's sheet between a generator pair (sheets/)
+  SphereCentre = 8   ///< a vertex: the whole MAT of a ball (its centre; governors: every face)
 };
 
 const char* toString(MedialElementType type);
@@ -72,7 +74,7 @@ struct MedialComplex
   std::vector<MedialElement> elements;
 
   /// Makes points that coincide (within `tolerance`) one, keeping the most special type
-  /// (junction > seam end > seam > skeletal edge > circle centre > convex edge > sheet):
+  /// (sphere centre > junction > seam end > seam > skeletal edge > circle centre > convex edge > sheet):
   /// neighbouring sheets built apart then share their border vertices. Drops triangles
   /// and repeated polyline points that collapse. Returns how many points were merged.
   int weld(double tolerance);

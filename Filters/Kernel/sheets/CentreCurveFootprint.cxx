@@ -1,7 +1,9 @@
 #include "CentreCurveFootprint.h"
 
 #include "geometry/ClosestPoint.h"
+#include "mat3d/BoundarySphere.h"
 #include "mat3d/CentreCurve.h"
+#include "sheets/SheetCoverage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +45,17 @@ std::vector<CentreCurveTouches> centreCurveTouches(const MedialComplex& mat)
     out.push_back(std::move(c));
   }
   return out;
+}
+
+std::vector<double> sphereCentreFootprints(const Boundary3D& boundary, const MedialComplex& mat, double tolerance)
+{
+  std::vector<double> covered(boundary.faces().size(), 0.0);
+  for (const MedialPoint3D& p : mat.points)
+    if (p.type == MedialPoint3DType::SphereCentre)
+      for (size_t f = 0; f < covered.size(); ++f)
+        if (const BezierPatch& face = boundary.faces()[f].patch; onSphere(face, { p.x, p.radius }, tolerance))
+          covered[f] += patchArea(face);
+  return covered;
 }
 
 namespace

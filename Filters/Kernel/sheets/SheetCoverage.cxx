@@ -52,21 +52,6 @@ double patchArea(const BezierPatch& patch, int n)
   return sum / (static_cast<double>(n) * n);
 }
 
-// The patch's area to 1e-12 of itself: the cells halved until two rules agree (the error
-// of the 3-point rule falls like the cell's size to the sixth: a rational quadratic settles
-// at 4 × 4 cells), at most 64 × 64.
-double patchArea(const BezierPatch& patch)
-{
-  double coarse = patchArea(patch, 1);
-  for (int n = 2; n <= 64; n *= 2)
-  {
-    const double fine = patchArea(patch, n);
-    if (std::abs(fine - coarse) <= 1e-12 * fine)
-      return fine;
-    coarse = fine;
-  }
-  return coarse;
-}
 
 // A point of a face: the face and its parameters there.
 struct OnFace
@@ -360,6 +345,21 @@ double footprintArea(const SheetSide* side, const SideProjector& projector, cons
 }
 
 } // namespace
+
+// (The error of the 3-point rule falls like the cell's size to the sixth: a rational
+// quadratic settles at 4 × 4 cells; at most 64 × 64.)
+double patchArea(const BezierPatch& patch)
+{
+  double coarse = patchArea(patch, 1);
+  for (int n = 2; n <= 64; n *= 2)
+  {
+    const double fine = patchArea(patch, n);
+    if (std::abs(fine - coarse) <= 1e-12 * fine)
+      return fine;
+    coarse = fine;
+  }
+  return coarse;
+}
 
 std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
   const std::vector<double>& footprints)

@@ -37,6 +37,9 @@ struct FaceCoverage
 /// circles of contact of centre curves: centreCurveFootprints). Face areas are integrated
 /// (Gauss–Legendre, cells halved until two rules agree to 1e-12). One entry per face or
 /// group.
+/// A face's area to 1e-12 of itself (Gauss–Legendre, cells halved until two rules agree).
+double patchArea(const BezierPatch& patch);
+
 std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::vector<MedialSheetMesh>& meshes,
   const std::vector<double>& footprints = {});
 

@@ -64,12 +64,14 @@ void writeMedialComplex(const MedialComplex& mat, const Normalisation& frame,
     {
       const MedialElement& el = mat.elements[e];
       std::vector<vtkIdType> ids(el.points.begin(), el.points.end());
-      if (pass == 0 && el.type == MedialElementType::Junction)
+      // (Vertex cells: junctions, and a ball's centre — the whole MAT of a sphere.)
+      const bool vertex = el.type == MedialElementType::Junction || el.type == MedialElementType::SphereCentre;
+      if (pass == 0 && vertex)
       {
         verts->InsertNextCell(1, ids.data());
         addCellData(e);
       }
-      else if (pass == 1 && !el.points.empty() && el.type != MedialElementType::Junction)
+      else if (pass == 1 && !el.points.empty() && !vertex)
       {
         lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
         addCellData(e);
