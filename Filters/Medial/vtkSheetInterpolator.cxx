@@ -857,7 +857,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   int uncoveredFaces = 0;
   // (What centre curves' circles cover counts, and a ball's centre covers its whole sphere.)
   std::vector<double> footprints = centreCurveFootprints(boundary, generators, centreCurveTouches(complex));
-  const std::vector<double> ball = sphereCentreFootprints(boundary, complex, 1e-9 * boundary.diagonal());
+  const std::vector<double> ball = sphericalFaceFootprints(boundary, complex, 1e-9 * boundary.diagonal());
   footprints.resize(ball.size(), 0.0);
   for (size_t f = 0; f < ball.size(); ++f)
     footprints[f] += ball[f];

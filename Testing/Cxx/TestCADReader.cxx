@@ -17,6 +17,7 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
@@ -572,6 +573,70 @@ TEST(vtkCADBoundaryReader, SphereMATIsItsCentre)
     EXPECT_EQ(sheets->GetNumberOfSheets(), 0);
     EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-12);
     EXPECT_EQ(sheets->GetOutput()->GetNumberOfVerts(), 1);
+  }
+}
+
+TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
+{
+  // Shafts as CAD writes them: OpenCASCADE's cylinder and cone about z (each cap a face
+  // the reader tiles into patches that meet at its centre, the apex of the cap's cone
+  // sheet: the centre curve's end touches every piece there, at one point — until
+  // 2026-11-28 that end was not taken as a cap end and the cap sheets failed), and a
+  // capsule (a cylinder fused with two balls: its axis ends at the balls' centres, each
+  // end ball touching a whole hemisphere).
+  struct Case
+  {
+    std::string name;
+    TopoDS_Shape shape;
+    int sheets;
+  };
+  TopoDS_Shape capsule = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeCylinder(1, 4).Shape(),
+    BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 4), 1).Shape()).Shape();
+  capsule = BRepAlgoAPI_Fuse(capsule, BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 0), 1).Shape()).Shape();
+  const std::vector<Case> cases{ { "cylinder", BRepPrimAPI_MakeCylinder(1, 4).Shape(), 2 },
+    { "cone", BRepPrimAPI_MakeCone(1.0, 0.4, 4.0).Shape(), 2 }, { "capsule", capsule, 0 } };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const std::string file = output("cad-canal-" + c.name + ".step");
+    writeStep(c.shape, file);
+    vtkNew<vtkCADBoundaryReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkMAT3DFilter> mat;
+    mat->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkSheetInterpolator> sheets;
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceConnection(reader->GetOutputPort());
+    auto errors = ErrorRecorder::watch(sheets);
+    auto matErrors = ErrorRecorder::watch(mat);
+    sheets->Update();
+    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
+    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    EXPECT_TRUE(mat->GetVerificationPassed());
+    EXPECT_EQ(mat->GetNumberOfCentreCurves(), 1);
+    EXPECT_EQ(mat->GetNumberOfSeams(), 0);
+    EXPECT_TRUE(sheets->GetVerificationPassed());
+    EXPECT_EQ(sheets->GetNumberOfInterpolatedSheets(), c.sheets);
+    EXPECT_EQ(sheets->GetNumberOfFailedSheets(), 0);
+    EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-3);
+    if (c.name == "capsule")
+    {
+      // The axis from (0, 0, 0) to (0, 0, 4), radius 1 all along.
+      vtkPolyData* out = mat->GetOutput();
+      double lowest = INFINITY, highest = -INFINITY;
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        out->GetPoint(i, x);
+        EXPECT_NEAR(std::hypot(x[0], x[1]), 0.0, 1e-10);
+        EXPECT_NEAR(out->GetPointData()->GetArray(arrays::Radius)->GetTuple1(i), 1.0, 1e-10);
+        lowest = std::min(lowest, x[2]);
+        highest = std::max(highest, x[2]);
+      }
+      // (The fused file's faces are known to about 1e-12 of its size of 7.5.)
+      EXPECT_NEAR(lowest, 0.0, 1e-10);
+      EXPECT_NEAR(highest, 4.0, 1e-10);
+    }
   }
 }
 

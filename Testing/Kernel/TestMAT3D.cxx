@@ -568,13 +568,13 @@ TEST(MAT3D, ABallsMATIsItsCentre)
     EXPECT_EQ(complex.elements.front().type, MedialElementType::SphereCentre);
     EXPECT_EQ(complex.elements.front().governors.size(), t.boundary->faces().size());
     // The coverage check's own test: the centre's ball covers every face, wholly.
-    const std::vector<double> covered = sphereCentreFootprints(*t.boundary, complex, 1e-9 * t.boundary->diagonal());
+    const std::vector<double> covered = sphericalFaceFootprints(*t.boundary, complex, 1e-9 * t.boundary->diagonal());
     for (const FaceCoverage& f : sheetCoverage(*t.boundary, {}, covered))
       EXPECT_LE(f.shortfall(), 1e-12) << what.str() << ": face " << f.face;
     // …and not a ball that is smaller, or off centre.
     MedialComplex off = complex;
     off.points.front().radius *= 1.0 + 1e-8;
-    for (double a : sphereCentreFootprints(*t.boundary, off, 1e-9 * t.boundary->diagonal()))
+    for (double a : sphericalFaceFootprints(*t.boundary, off, 1e-9 * t.boundary->diagonal()))
       EXPECT_EQ(a, 0.0) << what.str();
   }
   // One inner control point of one patch moved outwards by 1e-7 of the size: not a ball.
@@ -597,6 +597,61 @@ TEST(MAT3D, ABallsMATIsItsCentre)
     catch (const InputError&)
     {
     }
+  }
+}
+
+// A capsule (a cylinder of radius 1 and length L capped by two hemispheres, the profile
+// revolved): its MAT is the axis segment between the hemispheres' centres, radius 1, a
+// centre curve whose end balls touch a whole hemisphere each. The ends are those centres
+// exactly (they were 7e-8 of the size past them: the touch crossed onto the hemisphere was
+// bisected to within 1e-8 of the side, on the cylinder's extension), and the coverage
+// counts each hemisphere as the end ball's (sphericalFaceFootprints). Unmoved and far from
+// the origin.
+TEST(MAT3D, ACapsulesAxisEndsAtItsHemispheresCentres)
+{
+  const double L = 4.0, s = std::sqrt(0.5);
+  std::vector<NurbsSurface> capsule;
+  capsule.push_back(makeRevolution(NurbsCurve(2, { 0, 0, 0, 1, 1, 1 },
+    Vec4List{ Vec4(0, 0, -1, 1), Vec4(s, 0, -s, s), Vec4(1, 0, 0, 1) })));
+  capsule.push_back(makeRevolution(NurbsCurve(1, { 0, 0, 1, 1 }, Vec4List{ Vec4(1, 0, 0, 1), Vec4(1, 0, L, 1) })));
+  capsule.push_back(makeRevolution(NurbsCurve(2, { 0, 0, 0, 1, 1, 1 },
+    Vec4List{ Vec4(1, 0, L, 1), Vec4(s, 0, (L + 1) * s, s), Vec4(0, 0, L + 1, 1) })));
+  for (const Placement& placed : { Placement{}, farFromTheOrigin() })
+  {
+    const std::string what = "scale " + std::to_string(placed.scale);
+    const Traced t = trace(movedPieces(patchPieces(capsule), placed));
+    ASSERT_EQ(t.mat.centreCurves.size(), 1u) << what;
+    EXPECT_TRUE(t.mat.seams.empty() && t.mat.skeletalEdges.empty()) << what;
+    const Normalisation& frame = t.boundary->userFrame();
+    const double slack = 1e-12 * (L + 2.0) + 64.0 * frame.inputRounding() * (L + 2.0);
+    std::vector<double> ends;
+    for (int n : { t.mat.centreCurves.front().startNode, t.mat.centreCurves.front().endNode })
+    {
+      const Vec3 x = unplaced(placed, frame.toUser(t.mat.nodes[n].ball.x));
+      EXPECT_LE(std::hypot(x.x(), x.y()), slack) << what;
+      EXPECT_NEAR(frame.lengthToUser(t.mat.nodes[n].ball.r) / placed.scale, 1.0, slack) << what;
+      ends.push_back(x.z());
+    }
+    std::sort(ends.begin(), ends.end());
+    EXPECT_NEAR(ends.front(), 0.0, slack) << what;
+    EXPECT_NEAR(ends.back(), L, slack) << what;
+    const MedialComplex complex = t.mat.complex();
+    const MedialVerification v = verifyMedialComplex(PatchBoundary(*t.boundary), complex, 1,
+      std::max(1e-15, 64.0 * frame.inputRounding()));
+    EXPECT_LE(v.maxDistanceError, VerifiedDistanceTolerance) << what;
+    EXPECT_TRUE(topologyProblems(t).empty()) << what;
+    std::vector<double> covered =
+      centreCurveFootprints(*t.boundary, medialGenerators(*t.boundary), centreCurveTouches(t.mat));
+    const std::vector<double> caps = sphericalFaceFootprints(*t.boundary, complex, 1e-9 * t.boundary->diagonal());
+    int capFaces = 0;
+    for (size_t f = 0; f < caps.size(); ++f)
+    {
+      covered[f] += caps[f];
+      capFaces += caps[f] > 0.0;
+    }
+    EXPECT_EQ(capFaces, 8) << what; // two hemispheres of four patches each
+    for (const FaceCoverage& c : sheetCoverage(*t.boundary, {}, covered))
+      EXPECT_LE(c.shortfall(), 1e-5) << what << ": face " << c.face << " covered " << c.covered << " of " << c.area;
   }
 }
 

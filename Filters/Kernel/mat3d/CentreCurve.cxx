@@ -204,11 +204,15 @@ CentreTracer::Half CentreTracer::traceFrom(const CircleBall& start, Vec3 heading
       if (++crossings > 8)
         fail("3D MAT: the centre curve through ", where(here.x), " keeps crossing sides of ", Gen[f].name(),
           " without moving");
+      // (Bisected to the side itself, not to within OnFace of it: where the curve ends at
+      // a smooth edge — a capsule's axis at its hemispheres, whose centres are the ends — a
+      // touch up to OnFace past the side is on the face's extension, and its ball's centre
+      // that far past the true end, 7e-8 of the size.)
       double lo = 0.0, hi = s;
       for (int k = 0; k < 60 && hi - lo > 1e-13 * Size; ++k)
       {
         const double mid = 0.5 * (lo + hi);
-        (Gen[f].exitSide(q + mid * d, OnFace) < 0 ? lo : hi) = mid;
+        (Gen[f].exitSide(q + mid * d, 0.0) < 0 ? lo : hi) = mid;
       }
       CircleBall border;
       if (!ball(f, q + lo * d, border))

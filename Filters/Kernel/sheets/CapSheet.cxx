@@ -397,6 +397,21 @@ MedialSheetMesh CapSheetBuilder::run()
 
 } // namespace
 
+namespace
+{
+// The distinct points of `touches` (within 1e-9 of the radius: a cap tiled into pieces
+// that meet at the apex — a CAD cap cut by the 2D MAT's chords — has each piece touched
+// there, at one point up to rounding).
+Vec3List distinctTouches(const Vec3List& touches, double radius)
+{
+  Vec3List out;
+  for (const Vec3& t : touches)
+    if (std::none_of(out.begin(), out.end(), [&](const Vec3& o) { return (o - t).norm() <= 1e-9 * radius; }))
+      out.push_back(t);
+  return out;
+}
+} // namespace
+
 std::vector<CapEnd> capEnds(const MAT3D& mat)
 {
   std::vector<CapEnd> out;
@@ -404,11 +419,12 @@ std::vector<CapEnd> capEnds(const MAT3D& mat)
     for (int n : { curve.startNode, curve.endNode })
     {
       const MAT3DNode& node = mat.nodes[n];
-      if (!node.circleEnd || node.loopPoint || node.ball.touches.size() != 2)
+      const Vec3List touches = distinctTouches(node.ball.touches, node.ball.r);
+      if (!node.circleEnd || node.loopPoint || touches.size() != 2)
         continue;
       if (std::any_of(out.begin(), out.end(), [n](const CapEnd& e) { return e.id == n; }))
         continue;
-      out.push_back({ node.ball.x, node.ball.r, node.ball.touches[0], node.ball.touches[1], n });
+      out.push_back({ node.ball.x, node.ball.r, touches[0], touches[1], n });
     }
   return out;
 }
@@ -423,10 +439,11 @@ std::vector<CapEnd> capEnds(const MedialComplex& mat)
     for (int id : { e.points.front(), e.points.back() })
     {
       const MedialPoint3D& p = mat.points[id];
-      if (p.type != MedialPoint3DType::CircleCentre || p.touches.size() != 2 ||
+      const Vec3List touches = distinctTouches(p.touches, p.radius);
+      if (p.type != MedialPoint3DType::CircleCentre || touches.size() != 2 ||
         std::any_of(out.begin(), out.end(), [id](const CapEnd& c) { return c.id == id; }))
         continue;
-      out.push_back({ p.x, p.radius, p.touches[0], p.touches[1], id });
+      out.push_back({ p.x, p.radius, touches[0], touches[1], id });
     }
   }
   return out;

@@ -47,14 +47,20 @@ std::vector<CentreCurveTouches> centreCurveTouches(const MedialComplex& mat)
   return out;
 }
 
-std::vector<double> sphereCentreFootprints(const Boundary3D& boundary, const MedialComplex& mat, double tolerance)
+std::vector<double> sphericalFaceFootprints(const Boundary3D& boundary, const MedialComplex& mat, double tolerance)
 {
   std::vector<double> covered(boundary.faces().size(), 0.0);
   for (const MedialPoint3D& p : mat.points)
-    if (p.type == MedialPoint3DType::SphereCentre)
+    if (p.type == MedialPoint3DType::SphereCentre || p.type == MedialPoint3DType::CircleCentre)
       for (size_t f = 0; f < covered.size(); ++f)
-        if (const BezierPatch& face = boundary.faces()[f].patch; onSphere(face, { p.x, p.radius }, tolerance))
-          covered[f] += patchArea(face);
+      {
+        const BezierPatch& face = boundary.faces()[f].patch;
+        // (The face's middle first: most faces are nowhere near the ball's sphere.)
+        if (covered[f] > 0.0 || std::abs((face.evaluate(0.5, 0.5) - p.x).norm() - p.radius) > tolerance ||
+          !onSphere(face, { p.x, p.radius }, tolerance))
+          continue;
+        covered[f] = patchArea(face);
+      }
   return covered;
 }
 
@@ -109,10 +115,21 @@ std::vector<double> centreCurveFootprints(const Boundary3D& boundary, const std:
     {
       // (A ball whose touch is on no curved face, or whose circle is a point — an end
       // osculating a pole — adds no band of its own: the band runs to the next circle.)
-      const int f = faceAt(curve.touches[i], on);
-      if (f < 0)
+      // (A touch on an edge lies on both faces; the circle is taken from one where it is
+      // defined: at a capsule's end the other is its hemisphere, umbilic, where the focal
+      // point stands still every way and the circle's plane is undefined.)
+      Vec3List four;
+      for (int f = 0; f < faces; ++f)
+        if (!generators[f].planar() && distanceToBox(boxes[f], curve.touches[i]) <= on &&
+          generators[f].distance(curve.touches[i]) <= on)
+        {
+          four = contactCircle(generators[f], generators[f].parameterOf(curve.touches[i]), curve.centres[i], 4);
+          if (std::all_of(four.begin(), four.end(), [](const Vec3& x) { return x.allFinite(); }))
+            break;
+          four.clear();
+        }
+      if (four.size() != 4)
         continue;
-      const Vec3List four = contactCircle(generators[f], generators[f].parameterOf(curve.touches[i]), curve.centres[i], 4);
       Circle c;
       c.centre = 0.25 * (four[0] + four[1] + four[2] + four[3]);
       c.axis = (four[1] - four[0]).cross(four[2] - four[0]).normalized();

@@ -33,11 +33,11 @@ std::vector<CentreCurveTouches> centreCurveTouches(const MedialComplex& mat);
 std::vector<double> centreCurveFootprints(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
   const std::vector<CentreCurveTouches>& curves);
 
-/// What the ball of a SphereCentre point of `mat` (the MAT of a ball: its centre) covers:
-/// the whole of each face that lies on its sphere — checked again here, from the point's
-/// centre and radius alone (mat3d/BoundarySphere.h's grid test within `tolerance`, a
-/// length) — and nothing of a face that does not. Per face (Boundary3D order); zeros when
-/// the complex has no such point.
-std::vector<double> sphereCentreFootprints(const Boundary3D& boundary, const MedialComplex& mat, double tolerance);
+/// What balls that touch a whole face cover: a face lying on the sphere of a SphereCentre
+/// point (the MAT of a ball: its centre) or of a CircleCentre point (a centre curve's end at
+/// a spherical cap: a capsule's hemispheres) is covered wholly, once — checked here from
+/// the point's centre and radius alone (mat3d/BoundarySphere.h's grid test within
+/// `tolerance`, a length). Per face (Boundary3D order): the face's area or 0.
+std::vector<double> sphericalFaceFootprints(const Boundary3D& boundary, const MedialComplex& mat, double tolerance);
 
 } // namespace exactmat
