@@ -640,6 +640,43 @@ TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
   }
 }
 
+TEST(vtkCADBoundaryReader, LPrismWithSquareLegsIsComplete)
+{
+  // An L prism as tall as its legs are wide (3 × 2, legs 1, height 1): each leg is a square
+  // tube, along whose axis the seam is degenerate (four touchpoints) from where the wall
+  // opposite begins, at the reflex edge. The seam from the corner cube's junction runs
+  // into that wall tangentially; the junction is where the wall begins, not where the step
+  // that first saw it ended (a piece border of the tiled cap, 0.111 further: a spurious
+  // junction and a doubled seam, flagged, until 2026-11-28). 5 junctions, 15 seams, every
+  // sheet filled, every face covered.
+  BRepBuilderAPI_MakePolygon l;
+  for (const auto& p : { gp_Pnt(0, 0, 0), gp_Pnt(3, 0, 0), gp_Pnt(3, 1, 0), gp_Pnt(1, 1, 0), gp_Pnt(1, 2, 0),
+         gp_Pnt(0, 2, 0) })
+    l.Add(p);
+  l.Close();
+  const std::string file = output("cad-square-legs.step");
+  writeStep(BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(l.Wire()).Face(), gp_Vec(0, 0, 1)).Shape(), file);
+  vtkNew<vtkCADBoundaryReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkMAT3DFilter> mat;
+  mat->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkSheetInterpolator> sheets;
+  sheets->SetInputConnection(mat->GetOutputPort());
+  sheets->SetSourceConnection(reader->GetOutputPort());
+  auto errors = ErrorRecorder::watch(sheets);
+  auto matErrors = ErrorRecorder::watch(mat);
+  sheets->Update();
+  ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
+  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  EXPECT_TRUE(mat->GetVerificationPassed());
+  EXPECT_EQ(mat->GetNumberOfTopologyProblems(), 0);
+  EXPECT_EQ(mat->GetNumberOfJunctions(), 5);
+  EXPECT_EQ(mat->GetNumberOfSeams(), 15);
+  EXPECT_TRUE(sheets->GetVerificationPassed());
+  EXPECT_EQ(sheets->GetNumberOfFailedSheets(), 0);
+  EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-9);
+}
+
 TEST(vtkCADBoundaryReader, PlanarFaceMATIsTheCatalogueMAT)
 {
   // The catalogue's free-form plate with holes handed to OpenCASCADE as B-spline edges,

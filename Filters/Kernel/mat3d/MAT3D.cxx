@@ -1022,7 +1022,42 @@ bool Tracer::kiss(const MedialBall3D& from, const Eigen::VectorXd& t, double h, 
     if (g1 < -touching)
       continue; // it enters the ball: a junction, which the emptiness test finds
     if (g1 <= touching)
-      lo = hi = 1.0; // the end ball touches already
+    {
+      // The end ball touches already. Where it kisses the surface there (the gap's least
+      // value, a double root) the junction is the step's end. But a surface the ball runs
+      // along at its radius — an L prism's square leg, past the reflex edge where its wall
+      // begins: the seam turns degenerate — touches over the step's rest, and the junction
+      // is where the contact began: told apart by the gap 1e-3 of the size before the end
+      // (a kiss's is about 1e-6 of its curvature there), then bisected. On a planar
+      // surface, on where the centre's projection enters one of its pieces that touches
+      // (exact: the wall's start); else on the gap (to the square root of the rounding, as
+      // any tangential contact). Merged loosely either way.
+      lo = hi = 1.0;
+      const double before = std::max(0.5, 1.0 - 1e-3 * Size / h);
+      if (MedialBall3D m; step(from, t, before * h, m) && gap(faces, m) <= touching)
+      {
+        const bool planar = std::all_of(faces.begin(), faces.end(), [&](int f) { return Generators[f].planar(); });
+        auto touches = [&](const MedialBall3D& b) {
+          if (!planar)
+            return gap(faces, b) <= touching;
+          for (int f : faces)
+            if (Generators[f].holds(Generators[f].parameterOf(b.x), 0.0) &&
+              std::abs(Generators[f].distance(b.x) - b.r) <= touching)
+              return true;
+          return false;
+        };
+        // (Where a planar piece does not hold the centre's projection at `before`, its gap
+        // there is to the piece's side: a kiss at the end after all.)
+        double a0 = 0.0, a1 = touches(m) ? before : 1.0;
+        for (int k = 0; k < 60 && a1 < 1.0 && (a1 - a0) * h > 1e-13 * Size; ++k)
+        {
+          const double mid = 0.5 * (a0 + a1);
+          (step(from, t, mid * h, m) && touches(m) ? a1 : a0) = mid;
+        }
+        if (a1 < 1.0)
+          lo = hi = a1;
+      }
+    }
     else
     {
       if (a <= 0.0)
