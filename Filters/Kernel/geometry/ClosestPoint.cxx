@@ -1517,6 +1517,12 @@ namespace
 struct ComesWithin
 {
   ScratchLease scratch;
+  /// Work at which the search stops (the thread's box limit from its start): a tangency
+  /// along a curve of a singular parameterisation (a cone's apex, where a centre curve's
+  /// balls shrink) leaves boxes undecided down to depth 24 along the whole curve, 2^24 of
+  /// them. Past it the undecided rest counts as not inside, as at depth 24.
+  std::uint64_t end = 0;
+  bool cutShort = false;
 
   // The sign of h on the box decided by convexity: where the Bernstein bounds of its
   // Hessian prove it positive definite over the (convex) box, h lies above its tangent
@@ -1574,7 +1580,11 @@ struct ComesWithin
 
   bool negativeSomewhere(const BernsteinPoly2& h, int depthU, int depthV)
   {
-    ++Work;
+    if (++Work > end)
+    {
+      cutShort = true;
+      return false;
+    }
     const auto [mn, mx] = std::minmax_element(h.c.begin(), h.c.end());
     (void)mx;
     if (*mn >= 0.0)
@@ -1607,7 +1617,11 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
 {
   if (!(radius > 0.0) || distanceToBox(patch.boundingBox(), query) >= radius)
     return false;
-  return ComesWithin{}.negativeSomewhere(ballPolynomial(patch, query, radius), 0, 0);
+  ComesWithin search;
+  search.end = Work + static_cast<std::uint64_t>(BoxLimit);
+  const bool within = search.negativeSomewhere(ballPolynomial(patch, query, radius), 0, 0);
+  CutShort += search.cutShort ? 1 : 0;
+  return within;
 }
 
 std::uint64_t patchSearchWork()

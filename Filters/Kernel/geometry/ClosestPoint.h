@@ -98,7 +98,10 @@ std::optional<PatchFootpoint> localFootpoint(const BezierPatch& patch, const Vec
 /// box's coefficients are all ≥ 0 however small) a box is decided by convexity instead:
 /// where the Bernstein bounds of h's Hessian prove it positive definite, h lies above its
 /// tangent plane at the box's minimiser. The ball-emptiness test of the 3D tracer and the
-/// cone sheets.
+/// cone sheets. Bounded: at most the thread's box limit (PatchSearchLimit) boxes, past
+/// which the undecided rest counts as not inside (as boxes at depth 24 do: there the patch
+/// lies within rounding of the sphere) and the search counts as cut short
+/// (patchSearchesCutShort).
 bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius);
 
 /// Euclidean distance from a point to an axis-aligned box (0 inside): a lower bound for
