@@ -602,6 +602,10 @@ TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
   for (const Case& c : cases)
   {
     SCOPED_TRACE(c.name);
+#ifdef __SANITIZE_ADDRESS__
+    if (c.name == "cone-with-apex")
+      continue; // (5 s in Release: its searches run to their box limit near the apex)
+#endif
     const std::string file = output("cad-canal-" + c.name + ".step");
     writeStep(c.shape, file);
     vtkNew<vtkCADBoundaryReader> reader;
