@@ -16,6 +16,7 @@
 #include <BRepMAT2d_Explorer.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <GC_MakeArcOfEllipse.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BezierCurve.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <gp_Circ.hxx>
@@ -24,6 +25,7 @@
 #include <gp_Dir2d.hxx>
 #include <MAT_Graph.hxx>
 #include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopoDS.hxx>
@@ -36,6 +38,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 using namespace exactmat;
@@ -280,10 +283,53 @@ std::vector<NurbsCurve> gear(int n)
   return makePolygon(corners);
 }
 
+// ExactMAT as OpenCASCADE is timed: from the curves (its explorer reads the face) to the
+// MAT — the boundary (loops, orientation, crossing check), the generators and their tree,
+// the tracing; best of `repeats`. `error`: the verified error of the MAT.
+double exactmatMs(const std::vector<CurvePiece>& pieces, int repeats, double& error)
+{
+  const double ms = bestMs(repeats, [&] {
+    const Boundary2D bb = Boundary2D::build(pieces);
+    const Generators gg(bb);
+    const MedialGraph graph = computeMAT2D(gg);
+  });
+  const Boundary2D b = Boundary2D::build(pieces);
+  const Generators g(b);
+  error = verifyMAT2D(g, computeMAT2D(g)).maxDistanceError;
+  return ms;
+}
+
+// A closed uniform B-spline (the wavy strip: its last `degree` control points repeat its
+// first ones) as OpenCASCADE's native periodic B-spline, the same curve, given as two
+// edges (one closed edge is what crashes BRepMAT2d_BisectingLocus on a whole circle).
+TopoDS_Face nativeBSplineFace(const NurbsCurve& c)
+{
+  const int p = c.degree(), poles = c.controlPointCount() - p;
+  TColgp_Array1OfPnt points(1, poles);
+  for (int i = 0; i < poles; ++i)
+    points.SetValue(i + 1, pnt(c.controlPoint(i)));
+  TColStd_Array1OfReal knots(1, poles + 1);
+  TColStd_Array1OfInteger mults(1, poles + 1);
+  for (int i = 0; i <= poles; ++i)
+  {
+    knots.SetValue(i + 1, c.domainStart() + i);
+    mults.SetValue(i + 1, 1);
+  }
+  Handle(Geom_BSplineCurve) curve = new Geom_BSplineCurve(points, knots, mults, p, true);
+  const double t0 = c.domainStart(), t1 = c.domainEnd(), tm = std::floor(0.5 * (t0 + t1));
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(curve, t0, tm).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(curve, tm, t1).Edge());
+  return BRepBuilderAPI_MakeFace(gp_Pln(), wire.Wire()).Face();
+}
+
 } // namespace
 
-int main()
+int main(int argc, char* argv[])
 {
+  // --no-scaling: the catalogue and issue 14's polygons only (the scaling rows run
+  // OpenCASCADE on up to 10,000 edges, a few minutes).
+  const bool scaling = !(argc > 1 && std::strcmp(argv[1], "--no-scaling") == 0);
   const int repeats = 21;
   std::printf("## ExactMAT vs OpenCASCADE 7.6 BRepMAT2d_BisectingLocus (best of %d runs)\n\n", repeats);
   std::printf("| shape | ExactMAT adaptive 1e-4, set-up + tracing (ms) | verified error | OCCT, native edges (ms) | OCCT arcs | "
@@ -301,20 +347,10 @@ int main()
   shapes.push_back({ "gear, 1000 edges", gear(1000) });
   for (const auto& [name, curves] : shapes)
   {
-    // ExactMAT as OpenCASCADE is timed: from the curves (its explorer reads the face) to
-    // the MAT: the boundary (loops, orientation, crossing check), the generators and their
-    // tree, the tracing.
     const std::vector<CurvePiece> pieces = curvePieces(curves);
-    MedialGraph graph;
-    const double ours = bestMs(repeats, [&] {
-      const Boundary2D bb = Boundary2D::build(pieces);
-      const Generators gg(bb);
-      graph = computeMAT2D(gg);
-    });
     const Boundary2D b = Boundary2D::build(pieces);
-    const Generators g(b);
-    graph = computeMAT2D(g);
-    const double error = verifyMAT2D(g, graph).maxDistanceError;
+    double error = 0.0;
+    const double ours = exactmatMs(pieces, repeats, error);
     int arcs = 0, bezierArcs = 0;
     std::string why, bezierWhy;
     const double native = occtMs(occtFace(b, true), repeats, arcs, why);
@@ -327,6 +363,47 @@ int main()
       native >= 0 ? nativeText : why.c_str(), native >= 0 ? std::to_string(arcs).c_str() : "-",
       native >= 0 ? ratio : "-", bezier >= 0 ? bezierText : bezierWhy.c_str());
     std::fflush(stdout);
+  }
+  if (!scaling)
+    return 0;
+
+  // Scaling with the number of boundary entities, both tools on their native input:
+  // polygons as lines, the wavy strip's closed cubic B-spline as one periodic B-spline
+  // (in two edges) for OpenCASCADE, its Bézier spans for ExactMAT.
+  std::printf("\n## Scaling with the number of boundary entities, ExactMAT vs OpenCASCADE (native input, best of 3)\n\n");
+  std::printf("| boundary | entities | ExactMAT (ms) | exponent | verified error | OCCT (ms) | exponent | OCCT arcs | ratio OCCT / ExactMAT |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int family = 0; family < 3; ++family)
+  {
+    double lastOurs = 0.0, lastOcct = 0.0, lastN = 0.0;
+    for (const int n : { 100, 1000, 10000 })
+    {
+      std::vector<NurbsCurve> curves = family == 0 ? makeSawToothStrip(n)
+        : family == 1                              ? gear(n)
+                                                   : std::vector<NurbsCurve>{ makeWavyStrip(n) };
+      const std::vector<CurvePiece> pieces = curvePieces(curves);
+      const Boundary2D b = Boundary2D::build(pieces);
+      double error = 0.0;
+      const double ours = exactmatMs(pieces, 3, error);
+      int arcs = 0;
+      std::string why;
+      const double occt = occtMs(family == 2 ? nativeBSplineFace(curves.front()) : occtFace(b, true), 3, arcs, why);
+      auto exponent = [&](double ms, double last) {
+        return last > 0.0 && ms > 0.0 ? std::to_string(std::log(ms / last) / std::log(n / lastN)).substr(0, 4) : std::string();
+      };
+      char occtText[64], ratio[32];
+      std::snprintf(occtText, sizeof occtText, "%.1f", occt);
+      std::snprintf(ratio, sizeof ratio, "%.2f", occt / ours);
+      std::printf("| %s | %zu | %.1f | %s | %.1e | %s | %s | %s | %s |\n",
+        family == 0 ? "saw-tooth strip (polygon)" : family == 1 ? "gear (polygon)" : "wavy strip (cubic B-spline)",
+        b.edges().size(), ours, exponent(ours, lastOurs).c_str(), error, occt >= 0 ? occtText : why.c_str(),
+        occt >= 0 ? exponent(occt, lastOcct).c_str() : "-", occt >= 0 ? std::to_string(arcs).c_str() : "-",
+        occt >= 0 ? ratio : "-");
+      std::fflush(stdout);
+      lastOurs = ours;
+      lastOcct = occt;
+      lastN = n;
+    }
   }
   return 0;
 }

@@ -156,6 +156,8 @@ void vtkMAT2DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   const exactmat::Boundary2D boundary =
     exactmat::buildNormalised(exactmat::curvePiecesFromGrid(input));
   const exactmat::Generators generators(boundary);
+  result.measure("SetUpSeconds", secondsSince(t0));
+  t0 = std::chrono::steady_clock::now();
   exactmat::MAT2DOptions options;
   options.tolerance = this->Tolerance;
   options.fixedStep = this->FixedStep;
@@ -163,6 +165,8 @@ void vtkMAT2DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
   options.branchCheckStep = this->BranchCheckStep;
   options.progress = [&progress](double f) { progress(0.9 * f); };
   const exactmat::MedialGraph graph = exactmat::computeMAT2D(generators, options);
+  result.measure("TracingSeconds", secondsSince(t0));
+  t0 = std::chrono::steady_clock::now();
   GraphWriter(generators, boundary).write(graph, output);
   result.count("NumberOfSegments", static_cast<int>(graph.segments.size()));
   result.count("NumberOfBranchPoints", graph.count(exactmat::MedialPointType::Branch));
@@ -170,7 +174,7 @@ void vtkMAT2DFilter::ComputePart(vtkUnstructuredGrid* input, vtkPolyData* output
     graph.count(exactmat::MedialPointType::ConvexVertexEnd) +
       graph.count(exactmat::MedialPointType::CurvatureCentreEnd) +
       graph.count(exactmat::MedialPointType::CircleCentre));
-  result.measure("TracingSeconds", secondsSince(t0));
+  result.measure("OutputSeconds", secondsSince(t0));
   t0 = std::chrono::steady_clock::now();
   exactmat::VerificationOutcome& outcome = result.verification;
   if (this->VerifyOutput)
@@ -195,7 +199,9 @@ void vtkMAT2DFilter::PublishFigures(const exactmat::PartResult& figures)
   this->NumberOfSegments = static_cast<int>(figures.get("NumberOfSegments"));
   this->NumberOfBranchPoints = static_cast<int>(figures.get("NumberOfBranchPoints"));
   this->NumberOfEndPoints = static_cast<int>(figures.get("NumberOfEndPoints"));
+  this->SetUpSeconds = figures.get("SetUpSeconds");
   this->TracingSeconds = figures.get("TracingSeconds");
+  this->OutputSeconds = figures.get("OutputSeconds");
   this->VerificationSeconds = figures.get("VerificationSeconds");
 }
 

@@ -69,8 +69,12 @@ public:
   vtkGetMacro(NumberOfSegments, int);
   vtkGetMacro(NumberOfBranchPoints, int);
   vtkGetMacro(NumberOfEndPoints, int);
-  /// Seconds spent on tracing (boundary set-up included) and on the verification.
+  /// Seconds spent, apart: setting up the exact boundary (loops, orientation, the
+  /// crossing check, generators and their tree), tracing the MAT, writing it into the
+  /// output's points, cells and arrays, and verifying it.
+  vtkGetMacro(SetUpSeconds, double);
   vtkGetMacro(TracingSeconds, double);
+  vtkGetMacro(OutputSeconds, double);
   vtkGetMacro(VerificationSeconds, double);
   ///@}
 
@@ -90,7 +94,9 @@ protected:
   int NumberOfSegments = 0;
   int NumberOfBranchPoints = 0;
   int NumberOfEndPoints = 0;
+  double SetUpSeconds = 0.0;
   double TracingSeconds = 0.0;
+  double OutputSeconds = 0.0;
   double VerificationSeconds = 0.0;
 
 private:

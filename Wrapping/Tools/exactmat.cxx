@@ -46,6 +46,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -595,11 +596,18 @@ int cycleCount(vtkPolyData* mat)
 
 int run2D(const Arguments& a)
 {
+  // Wall times of this program's own steps, printed apart from the filter's.
+  auto clock = std::chrono::steady_clock::now;
+  auto msSince = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+  };
+  auto t0 = clock();
   vtkNew<ErrorLine> errors;
   std::string label;
   vtkSmartPointer<vtkUnstructuredGrid> boundary = loadBoundary(a, errors, label);
   if (!boundary)
     return ExitInputError;
+  const double readMs = msSince(t0);
 
   vtkNew<vtkMAT2DFilter> mat;
   mat->SetInputData(boundary);
@@ -610,12 +618,12 @@ int run2D(const Arguments& a)
   vtkNew<ProgressLine> progress;
   progress->What = "tracing";
   mat->AddObserver(vtkCommand::ProgressEvent, progress);
+  t0 = clock();
   mat->Update();
+  const double filterMs = msSince(t0);
   if (errors->Failed)
     return ExitInputError;
   vtkPolyData* out = mat->GetOutput();
-  const double traceMs = 1e3 * mat->GetTracingSeconds();
-  const double verifyMs = 1e3 * mat->GetVerificationSeconds();
   const exactmat::Boundary2D b = exactmat::buildNormalised(exactmat::curvePiecesFromGrid(boundary));
   vtkDataArray* type = out->GetPointData()->GetArray(exactmat::arrays::PointType);
   int counts[6] = { 0, 0, 0, 0, 0, 0 };
@@ -626,8 +634,10 @@ int run2D(const Arguments& a)
       ++counts[t];
   }
 
+  t0 = clock();
   if (!writePolyData(out, a.output, errors))
     return ExitOutputError;
+  const double writeMs = msSince(t0);
 
   const int holes = b.holeCount();
   std::printf("ExactMAT 2D medial axis transform of %s\n", label.c_str());
@@ -642,7 +652,14 @@ int run2D(const Arguments& a)
     counts[2] + counts[3] + counts[5], counts[2], counts[3], counts[5] ? ", 1 circle centre" : "");
   std::printf("  cycles              %d (holes: %d)\n", cycleCount(out), holes);
   std::printf("  points              %lld\n", static_cast<long long>(out->GetNumberOfPoints()));
-  std::printf("  time                %.2f ms tracing, %.2f ms verification\n", traceMs, verifyMs);
+  std::printf("  time                %.3f ms set-up, %.3f ms tracing, %.3f ms verification\n",
+    1e3 * mat->GetSetUpSeconds(), 1e3 * mat->GetTracingSeconds(), 1e3 * mat->GetVerificationSeconds());
+  std::printf("  time (VTK, I/O)     %.3f ms output arrays, %.3f ms rest of the filter's pipeline; "
+              "%.3f ms reading, %.3f ms writing\n",
+    1e3 * mat->GetOutputSeconds(),
+    std::max(0.0, filterMs - 1e3 * (mat->GetSetUpSeconds() + mat->GetTracingSeconds() +
+      mat->GetOutputSeconds() + mat->GetVerificationSeconds())),
+    readMs, writeMs);
   std::printf("  largest verified error  %.3g (|distance to boundary - radius| / size)\n",
     mat->GetMaximumVerifiedError());
   std::printf("  verification        %s\n", mat->GetVerificationPassed() ? "passed" : "FAILED");

@@ -62,6 +62,34 @@ public:
     return false;
   }
 
+  /// The same walk for any region: `reaches(box)` is true for every box that meets it
+  /// (and may be for others); items' boxes are asked too.
+  template <typename Reaches, typename Visit>
+  bool anyWhere(Reaches&& reaches, Visit&& visit) const
+  {
+    if (Nodes.empty())
+      return false;
+    int stack[2 * MaxTreeDepth + 8];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0)
+    {
+      const Node& node = Nodes[stack[--top]];
+      if (node.box.isEmpty() || !reaches(node.box))
+        continue;
+      if (node.left < 0)
+      {
+        for (int k = node.first; k < node.first + node.count; ++k)
+          if (!Boxes[Order[k]].isEmpty() && reaches(Boxes[Order[k]]) && visit(Order[k]))
+            return true;
+        continue;
+      }
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    }
+    return false;
+  }
+
   /// The tree's depth bound (median splits stop there, whatever the boxes).
   static constexpr int MaxTreeDepth = 64;
 

@@ -1,5 +1,7 @@
 #include "SweptSolid.h"
 
+#include "mat2d/Bisector.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,6 +17,55 @@ struct Foot
   double s = 0.0;
   Vec2 point = Vec2::Zero();
 };
+
+// The profile MAT with samples at most `longest` apart along its segments between two
+// straight edges. The tracer steps along such a segment as far as one sweep of its disks
+// allows (the segment is straight and its radius linear: a long chord is exact), but a
+// strip that long is a tile much longer than wide, and the sheets parameterised on it lose
+// accuracy along their borders: the tiles keep the tracer's usual step (points solved on
+// the exact bisector).
+MedialGraph withChordsAtMost(const Generators& G, const MedialGraph& mat, double longest)
+{
+  MedialGraph out = mat;
+  for (MedialSegment& seg : out.segments)
+  {
+    std::vector<MedialSample> dense;
+    for (size_t i = 0; i < seg.samples.size(); ++i)
+    {
+      const MedialSample& q = seg.samples[i];
+      if (i > 0)
+      {
+        const MedialSample& p = seg.samples[i - 1];
+        const int ga = p.foot[0].g, gb = p.foot[1].g;
+        const double chord = (q.x - p.x).norm();
+        if (chord > longest && ga >= 0 && gb >= 0 && ga == q.foot[0].g && gb == q.foot[1].g &&
+          G[ga].kind == GeneratorKind::Edge && G[gb].kind == GeneratorKind::Edge && G.straight(ga) && G.straight(gb))
+        {
+          const Bisector B(G, ga, gb);
+          const int pieces = static_cast<int>(std::min(1e4, std::ceil(chord / longest)));
+          for (int j = 1; j < pieces; ++j)
+          {
+            const double f = static_cast<double>(j) / pieces;
+            BisectorState y{ p.foot[0].s + f * (q.foot[0].s - p.foot[0].s), p.foot[1].s + f * (q.foot[1].s - p.foot[1].s),
+              p.radius + f * (q.radius - p.radius) };
+            GeneratorPoint a, b;
+            if (!B.correct(y, 0, 1e-13 * G.size2D(), &a, &b))
+              continue;
+            MedialSample m;
+            m.x = a.p + y.r * a.n;
+            m.radius = y.r;
+            m.foot[0] = { ga, y.sa, a.p, a.n, false };
+            m.foot[1] = { gb, y.sb, b.p, b.n, false };
+            dense.push_back(m);
+          }
+        }
+      }
+      dense.push_back(q);
+    }
+    seg.samples = std::move(dense);
+  }
+  return out;
+}
 
 class CapTiler
 {
@@ -196,7 +247,7 @@ std::vector<PatchPiece> sweptSolidFaces(
 {
   CapTiler tiler(profile, sweep);
   if (!sweep.closed())
-    tiler.tile(profileMAT);
+    tiler.tile(withChordsAtMost(profile, profileMAT, 0.05 * profile.size2D()));
   for (std::vector<double>& cuts : tiler.Splits)
   {
     std::sort(cuts.begin(), cuts.end());

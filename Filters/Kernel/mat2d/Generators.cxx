@@ -131,6 +131,9 @@ Generators::Generators(const Boundary2D& boundary)
     }
   }
   Tree.build(boxes);
+  Carriers.resize(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+    Carriers[e] = ConicCarrier::of(edges[e].curve, size2D());
 }
 
 std::string Generators::describe(const Vec2& x) const
@@ -242,7 +245,7 @@ bool Generators::anyCloserThan(const Vec2& x, double radius) const
     if (e == last)
       return false;
     last = e;
-    return curveComesWithin(edges[e].curve, q, radius);
+    return !staysOutside(e, q, radius) && curveComesWithin(edges[e].curve, q, radius);
   });
 }
 
@@ -259,12 +262,153 @@ bool Generators::anyCloserThan(
     if (e == last)
       return false;
     last = e;
+    if (staysOutside(e, q, radius))
+      return false;
     if (e == ea)
       return curveComesWithin(edges[e].curve, q, radius, sa);
     if (e == eb)
       return curveComesWithin(edges[e].curve, q, radius, sb);
     return curveComesWithin(edges[e].curve, q, radius);
   });
+}
+
+namespace
+{
+// The least t ∈ [0, 1] at which the disk (x0 + t b, r0 + t k) reaches the segment [e0, e1]
+// (its distance ≤ the radius, the radius positive), or +∞. The distance to a segment is
+// that to its line where the foot falls inside it, else that to an end point: the first
+// contact is the earlier of the end points' and of the line's while its foot is inside.
+double firstSegmentContact(const Vec2& x0, const Vec2& b, double r0, double k, const Vec2& e0, const Vec2& e1)
+{
+  const Vec2 edge = e1 - e0;
+  const double length2 = edge.squaredNorm();
+  // The segment is no nearer than its line: when the centres stay on one side of it and
+  // farther than the radius at both ends (|d| − r is linear there), no disk reaches it —
+  // most edges a sweep's boxes bring, settled without a square root.
+  const double d0 = Vec2(-edge.y(), edge.x()).dot(x0 - e0), d1 = d0 + Vec2(-edge.y(), edge.x()).dot(b);
+  if ((d0 > 0.0) == (d1 > 0.0) && d0 * d0 > r0 * std::abs(r0) * length2 &&
+    d1 * d1 > (r0 + k) * std::abs(r0 + k) * length2)
+    return INFINITY;
+  double first = INFINITY;
+  const double A = b.squaredNorm() - k * k;
+  for (const Vec2& e : { e0, e1 })
+  {
+    // |a + t b|² = (r0 + t k)²: A t² + 2 B t + C = 0, the smaller root with r > 0.
+    const Vec2 a = x0 - e;
+    const double B = a.dot(b) - r0 * k, C = a.squaredNorm() - r0 * r0;
+    if (C <= 0.0 && r0 > 0.0)
+      return 0.0;
+    const double D = B * B - A * C;
+    if (!(D >= 0.0))
+      continue;
+    const double q = -(B + std::copysign(std::sqrt(D), B));
+    for (const double t : { q / A, q != 0.0 ? C / q : INFINITY })
+      if (t >= 0.0 && t <= 1.0 && r0 + t * k > 0.0)
+        first = std::min(first, t);
+  }
+  // The line: |d0 + t dd| ≤ r0 + t k, i.e. (dd − k) t ≤ r0 − d0 and (dd + k) t ≥ −r0 − d0,
+  // with the foot's parameter u0 + t du in [0, 1].
+  if (length2 > 0.0)
+  {
+    const Vec2 n = Vec2(-edge.y(), edge.x()) / std::sqrt(length2);
+    const double d0 = n.dot(x0 - e0), dd = n.dot(b);
+    const double u0 = (x0 - e0).dot(edge) / length2, du = b.dot(edge) / length2;
+    double lo = 0.0, hi = 1.0;
+    auto atMost = [&](double slope, double bound) { // slope · t ≤ bound
+      if (slope > 0.0)
+        hi = std::min(hi, bound / slope);
+      else if (slope < 0.0)
+        lo = std::max(lo, bound / slope);
+      else if (bound < 0.0)
+        hi = -1.0;
+    };
+    atMost(dd - k, r0 - d0);
+    atMost(-(dd + k), r0 + d0);
+    atMost(du, 1.0 - u0);
+    atMost(-du, u0);
+    if (lo <= hi && r0 + lo * k > 0.0)
+      first = std::min(first, lo);
+  }
+  return first;
+}
+
+} // namespace
+
+SweepContact Generators::firstContact(const Vec2& x0, double r0, const Vec2& x1, double r1, int touchA,
+  int touchB, double& t, double endsEmpty) const
+{
+  const Vec2 b = x1 - x0;
+  const double k = r1 - r0;
+  t = INFINITY;
+  if (!(std::abs(k) < b.norm()) && b.squaredNorm() > 0.0)
+    return SweepContact::Undecided;
+  const auto& edges = Boundary->edges();
+  const int ea = List[touchA].kind == GeneratorKind::Edge ? List[touchA].edge : -1;
+  const int eb = List[touchB].kind == GeneratorKind::Edge ? List[touchB].edge : -1;
+  // Every disk of the sweep lies in the disk about its middle that reaches its ends'.
+  const Vec2 middle = 0.5 * (x0 + x1);
+  const Vec3 q(middle.x(), middle.y(), 0.0);
+  const double reach = 0.5 * b.norm() + std::max(r0, r1);
+  // With both end disks empty, what is left of the sweep (the convex hull of the two end
+  // disks) are the two slivers between them and the touched lines: each lies in the
+  // triangle of the feet of x0 and x1 on its line and the end circles' crossing nearer
+  // to it (the arcs bound it from inside those chords), padded by how far the given
+  // radii may be from the empty ones'.
+  Box3 slivers[2];
+  bool local = endsEmpty >= 0.0 && ea >= 0 && eb >= 0 && List[touchA].straight && List[touchB].straight;
+  const double d = b.norm();
+  if (local)
+  {
+    // The circles' crossings: a along b, ±h across it.
+    const double along = (r0 * r0 - r1 * r1 + d * d) / (2.0 * d), h2 = r0 * r0 - along * along;
+    local = d > 0.0 && h2 > 0.0;
+    if (local)
+    {
+      const Vec2 u = b / d, across(-u.y(), u.x());
+      const Vec2 crossing[2] = { x0 + along * u + std::sqrt(h2) * across, x0 + along * u - std::sqrt(h2) * across };
+      const int lines[2] = { ea, eb };
+      const double pad = 2.0 * endsEmpty + 1e-12 * (size2D() + reach);
+      for (int side = 0; side < 2; ++side)
+      {
+        const Vec2 e0 = edges[lines[side]].curve.startPoint().head<2>(), e1 = edges[lines[side]].curve.endPoint().head<2>();
+        const Vec2 dir = (e1 - e0).normalized();
+        auto foot = [&](const Vec2& x) { return Vec2(e0 + (x - e0).dot(dir) * dir); };
+        auto fromLine = [&](const Vec2& x) { return std::abs(dir.x() * (x - e0).y() - dir.y() * (x - e0).x()); };
+        const Vec2& apex = fromLine(crossing[0]) <= fromLine(crossing[1]) ? crossing[0] : crossing[1];
+        for (const Vec2& p : { foot(x0), foot(x1), apex })
+          slivers[side].extend(Vec3(p.x(), p.y(), 0.0));
+        slivers[side].min().array() -= pad;
+        slivers[side].max().array() += pad;
+      }
+    }
+  }
+  auto reaches = [&](const Box3& box) {
+    if (local)
+      return box.intersects(slivers[0]) || box.intersects(slivers[1]);
+    const Vec3 nearest = q.cwiseMax(box.min()).cwiseMin(box.max());
+    return (nearest - q).squaredNorm() <= reach * reach;
+  };
+  bool undecided = false;
+  int last = -1;
+  Tree.anyWhere(reaches, [&](int item) {
+    const int e = ItemEdge[item];
+    if (e == last || e == ea || e == eb)
+      return false;
+    last = e;
+    const BezierCurve& c = edges[e].curve;
+    if (!List[GeneratorOfEdge[e]].straight)
+    {
+      // No closed form: the sweep is undecided unless the curve stays out of its reach.
+      undecided = !staysOutside(e, q, reach) && curveComesWithin(c, q, reach);
+      return undecided;
+    }
+    const Vec3 e0 = c.startPoint(), e1 = c.endPoint();
+    t = std::min(t, firstSegmentContact(x0, b, r0, k, Vec2(e0.x(), e0.y()), Vec2(e1.x(), e1.y())));
+    return t == 0.0;
+  });
+  if (undecided)
+    return SweepContact::Undecided;
+  return t <= 1.0 ? SweepContact::Contact : SweepContact::Clear;
 }
 
 std::vector<BoundaryLocation> Generators::footpointsWithin(const Vec2& x, double radius) const

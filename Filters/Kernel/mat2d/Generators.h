@@ -11,6 +11,9 @@
 
 #include "brep/Boundary2D.h"
 #include "geometry/BoundingVolumeHierarchy.h"
+#include "geometry/ConicCarrier.h"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -30,6 +33,14 @@ struct GeneratorPoint
   Vec2 p = Vec2::Zero(), n = Vec2::Zero();
   Vec2 dp = Vec2::Zero(), dn = Vec2::Zero();
   double curvature = 0.0; ///< signed curvature (> 0 turning left); +∞ for a corner
+};
+
+/// What a straight stretch of disks meets (Generators::firstContact).
+enum class SweepContact
+{
+  Clear,     ///< no boundary point enters any of its disks
+  Contact,   ///< the boundary enters first at the parameter returned
+  Undecided  ///< a curved edge is near: no closed form (test disks one by one instead)
 };
 
 struct Generator
@@ -90,6 +101,25 @@ public:
   /// coincide (a minimum at an edge's end belongs to the corner or vertex there).
   std::vector<BoundaryLocation> footpointsWithin(const Vec2& x, double radius) const;
 
+  /// Disks whose centres run straight from x0 to x1 while their radii change linearly from
+  /// r0 to r1 (the bisector of two straight edges: touching them all along, so generators
+  /// `touchA` and `touchB` are left out): the least t ∈ [0, 1] at which the disk of centre
+  /// x0 + t (x1 − x0) and radius r0 + t (r1 − r0) has a boundary point strictly inside, in
+  /// closed form for straight edges (a line: linear in t; an end point: a quadratic) — so
+  /// a whole segment between two lines is checked by one sweep, with nothing between two
+  /// samples left unseen. Undecided when a curved edge comes within the sweep's reach, or
+  /// when the radius changes as fast as the centre moves (no MAT segment does).
+  ///
+  /// `endsEmpty` ≥ 0 says both end disks are known to be empty (their radii less this
+  /// much are exactly those found empty): then only what the sweep covers beyond them is
+  /// searched — two
+  /// slivers along the touched lines, each within the triangle of the lines' feet of x0
+  /// and x1 and the end circles' crossing next to that line — so a step onto a node found
+  /// before (a regular polygon's centre, reached from every side) costs the edges near its
+  /// two lines, not every edge the node's disk reaches.
+  SweepContact firstContact(const Vec2& x0, double r0, const Vec2& x1, double r1, int touchA, int touchB,
+    double& t, double endsEmpty = -1.0) const;
+
   /// The reflex-corner generator at Boundary2D vertex v, or −1.
   int cornerAtVertex(int v) const { return CornerOfVertex[v]; }
   /// The generator of Boundary2D edge e.
@@ -101,6 +131,13 @@ private:
   std::vector<int> CornerOfVertex, GeneratorOfEdge;
   BoundingVolumeHierarchy Tree;
   std::vector<int> ItemEdge; ///< the edge of each of the tree's items (an edge or a piece of one)
+  /// The ellipse or circle each elliptic arc lies on: a disk it proves every point of the
+  /// conic to stay outside needs no Bernstein test of the arc.
+  std::vector<std::optional<ConicCarrier>> Carriers;
+  bool staysOutside(int e, const Vec3& q, double radius) const
+  {
+    return Carriers[e] && Carriers[e]->distanceLowerBound(q) >= radius;
+  }
 };
 
 } // namespace exactmat

@@ -223,6 +223,7 @@ public:
     , L(g.size2D())
     , InputRounding(64.0 * g.boundary().userFrame().inputRounding())
     , Cover(g.size(), o.fixedStep)
+    , NodesByGenerator(g.size())
   {
   }
 
@@ -349,6 +350,15 @@ private:
   MedialGraph Graph;
   /// Nodes by grid cell (cells of NodeCell·L), so finding a node near a point is O(1).
   std::unordered_map<long long, std::vector<int>> NodeGrid;
+  /// The nodes with a footpoint on each generator: a segment between two straight edges
+  /// that runs into a node found before (a regular polygon's centre, reached from every
+  /// side) lands on it instead of sweeping past it.
+  std::vector<std::vector<int>> NodesByGenerator;
+  /// The node on the bisector of the fronts' generators (straight edges) between states y
+  /// and y1 — footpoints on both, ahead of both fronts, at the interpolated state — the
+  /// first one along; −1 when none. `at` receives its state.
+  int nodeAhead(int ga, int gb, const BisectorState& y, const BisectorState& y1, const Vec2& x0, const Vec2& x1,
+    BisectorState& at) const;
   static constexpr double NodeCell = 1e-5;
   /// Branch points closer than this fraction of the size are one node (a node of degree
   /// k ≥ 4): merging them moves a point by less than the verification's 1e-9.
@@ -437,7 +447,47 @@ int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<B
   Graph.nodes.push_back(std::move(n));
   const int id = static_cast<int>(Graph.nodes.size()) - 1;
   NodeGrid[cellKey(cellIndex(x.x()), cellIndex(x.y()))].push_back(id);
+  for (const BoundaryLocation& f : Graph.nodes[id].footpoints)
+    NodesByGenerator[f.g].push_back(id);
   return id;
+}
+
+int Tracer::nodeAhead(int ga, int gb, const BisectorState& y, const BisectorState& y1, const Vec2& x0,
+  const Vec2& x1, BisectorState& at) const
+{
+  const Vec2 step = x1 - x0;
+  const double length2 = step.squaredNorm();
+  if (!(length2 > 0.0))
+    return -1;
+  int best = -1;
+  double first = INFINITY;
+  for (const int id : NodesByGenerator[ga])
+  {
+    const MedialNode& n = Graph.nodes[id];
+    const BoundaryLocation *fa = nullptr, *fb = nullptr;
+    for (const BoundaryLocation& f : n.footpoints)
+    {
+      // (A step that joins boundary traced before lands on its start to rounding.)
+      if (f.g == ga && f.s > y.sa && f.s <= y1.sa + 1e-9)
+        fa = &f;
+      if (f.g == gb && f.s < y.sb && f.s >= y1.sb - 1e-9)
+        fb = &f;
+    }
+    if (!fa || !fb)
+      continue;
+    // Touching both lines, the node is on their bisector (to its own precision): where
+    // along this step, and is its radius the step's there?
+    const double tau = (n.sample.x - x0).dot(step) / length2;
+    const Vec2 x = x0 + tau * step;
+    if (tau > 0.0 && tau <= 1.0 + 1e-9 && tau < first && (x - n.sample.x).norm() <= 1e-7 * L &&
+      std::abs(y.r + tau * (y1.r - y.r) - n.sample.radius) <= 1e-7 * L)
+    {
+      first = tau;
+      best = id;
+      at = BisectorState{ fa->s, fb->s, n.sample.radius };
+    }
+  }
+  return best;
 }
 
 bool Tracer::stepAlong(int& g, double& s, int dir, double distance) const
@@ -613,6 +663,7 @@ void Tracer::mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpo
     if (!isKnown)
     {
       n.footpoints.push_back(f);
+      NodesByGenerator[f.g].push_back(node);
       known.emplace(f.g, f.point);
       added = true;
     }
@@ -794,6 +845,13 @@ void Tracer::trace(const Pending& p)
 
   // Whether each front has moved off its starting place (see the sliver rule below).
   bool aLeftStart = false, bLeftStart = false;
+  // The generator pair whose sweep was undecided (a curved edge within its reach): its
+  // steps are tested disk by disk, at most 0.05 of the size apart.
+  int noSweepA = -1, noSweepB = -1;
+  // The last disk known to be empty (to the tracer's margin): the start node's, then each
+  // accepted step's end. A sweep from it onto another such disk searches only its slivers.
+  Vec2 emptyX = start.sample.x;
+  double emptyR = start.sample.radius;
   struct
   {
     bool valid = false, closing = false;
@@ -1073,6 +1131,14 @@ void Tracer::trace(const Pending& p)
         G.describe(x0));
     }
 
+    // Between two straight edges the MAT is a straight line and its radius linear: one
+    // step may go all the way to where a third entity comes in, found by one sweep of
+    // the disks in closed form (Generators::firstContact), not by disk tests along it.
+    bool sweep = !O.fixedStep && G.straight(a.g) && G.straight(b.g) && !(a.g == noSweepA && b.g == noSweepB);
+    // Its length: as far as the disks' reach stays local (a sweep costs the edges within
+    // it), no less than the usual step.
+    if (sweep)
+      h = std::max(0.05 * L, 64.0 * y.r);
     bool accepted = false;
     for (int attempt = 0; attempt < 60 && !accepted; ++attempt)
     {
@@ -1193,9 +1259,58 @@ void Tracer::trace(const Pending& p)
           ok = false;
       }
       Vec2 x1 = ok ? Vec2(ga1.p + y1.r * ga1.n) : Vec2::Zero();
+      // A straight step that passes a node found before, or joins boundary traced before
+      // at one, ends on it exactly (its disk is the node's: found empty).
+      int ontoNode = -1;
+      if (ok && sweep)
+      {
+        BisectorState at;
+        ontoNode = nodeAhead(a.g, b.g, y, y1, x0, x1, at);
+        if (ontoNode >= 0)
+        {
+          y1 = at;
+          ga1 = G.evaluate(a.g, y1.sa);
+          gb1 = G.evaluate(b.g, y1.sb);
+          x1 = Graph.nodes[ontoNode].sample.x;
+          joining = false;
+        }
+      }
       // Next step from the measured chord error (∝ h²), kept within [×0.2, ×2].
       double resize = 0.5;
-      if (ok && !O.fixedStep)
+      // Where the sweep of a straight step meets the boundary first (> 1: nowhere).
+      double contactAt = INFINITY;
+      bool swept = false;
+      if (ok && sweep)
+      {
+        double t = INFINITY;
+        // Both end disks empty — the start's within the last one found so (a front moved
+        // onto the next generator moves the point by rounding: its disk is taken smaller
+        // by as much), the end's as a node's (every node's disk was found empty, to at
+        // most this margin, when it was made) or by its own test, which stops at the first
+        // piece inside when it is not — leave only the slivers beside the touched lines.
+        const double moved = (x0 - emptyX).norm() + std::abs(y.r - emptyR);
+        const bool endsEmpty =
+          moved <= 0.1 * diskMargin(y.r) && (ontoNode >= 0 || emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb));
+        const double r0 = y.r - diskMargin(y.r) - (endsEmpty ? moved : 0.0);
+        const SweepContact c =
+          G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t, endsEmpty ? 0.0 : -1.0);
+        if (c == SweepContact::Undecided)
+        {
+          noSweepA = a.g;
+          noSweepB = b.g;
+          sweep = false;
+          ok = false;
+          h = std::min(h, 0.1 * L);
+        }
+        else
+        {
+          swept = true;
+          resize = 2.0;
+          if (c == SweepContact::Contact)
+            contactAt = t;
+        }
+      }
+      else if (ok && !O.fixedStep)
       {
         Halfway m;
         if (halfway(y, x0, y1, x1, m))
@@ -1249,7 +1364,7 @@ void Tracer::trace(const Pending& p)
       const bool check = !sharedConvexVertex &&
         (checkEveryStep || sinceCheck >= checkEvery || joining || landsOnEnd);
       const bool valid = curvatureOk(a.g, ga1, y1.r) && curvatureOk(b.g, gb1, y1.r) &&
-        (!check || emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb));
+        (!check || (swept ? !(contactAt <= 1.0) : emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb)));
       if (!valid)
       {
         if (!checkEveryStep)
@@ -1408,7 +1523,6 @@ void Tracer::trace(const Pending& p)
         };
         // Coarse, then polished; the coarse precision follows the step, so a segment
         // shorter than 1e-8 (inside a cluster of branch points) is bisected too.
-        bisect(std::min(1e-8 * L, 1e-3 * (x1 - x0).norm()));
         // The bisection's disk test has a margin (no less than the input's rounding):
         // where the third generator meets the segment at a grazing angle θ (next to an
         // almost flat convex vertex) it places the branch point up to margin / θ past the
@@ -1416,11 +1530,33 @@ void Tracer::trace(const Pending& p)
         // The disk of the right candidate is empty to rounding; where the input is known to
         // fewer digits than that (far from the origin, pieces meet with kinks of its
         // rounding), to the input's rounding, as the bisection's disk test has it.
-        const double wide = 1.01 * (B.point(yb) - x0).norm();
-        const double loose = diskMargin(yb.r);
-        if (!reuseNode() && !polish(1e-6 * L, strict) && !(wide > 1e-6 * L && polish(wide, strict)) &&
-          !(loose > 2 * strict && polish(1e-6 * L, loose)))
-          bisect(1e-13 * L);
+        auto locate = [&]() {
+          const double wide = 1.01 * (B.point(yb) - x0).norm();
+          const double loose = diskMargin(yb.r);
+          return reuseNode() || polish(1e-6 * L, strict) || (wide > 1e-6 * L && polish(wide, strict)) ||
+            (loose > 2 * strict && polish(1e-6 * L, loose));
+        };
+        bool located = false;
+        if (contactAt <= 1.0)
+        {
+          // The sweep says where the third entity comes in: polish from there (a regular
+          // polygon's n segments into its centre: no n disk tests of n edges each).
+          BisectorState yc{ y.sa + contactAt * (y1.sa - y.sa), y.sb + contactAt * (y1.sb - y.sb),
+            y.r + contactAt * (y1.r - y.r) };
+          if (B.correct(yc, fixed, solveTol))
+          {
+            yb = yc;
+            located = locate();
+          }
+          if (!located)
+            yb = y;
+        }
+        if (!located)
+        {
+          bisect(std::min(1e-8 * L, 1e-3 * (x1 - x0).norm()));
+          if (!locate())
+            bisect(1e-13 * L);
+        }
         const Vec2 xb = branchPoint(yb, branchA, branchB);
         // The chord to the branch point is a part of the step whose deviation was
         // measured, not the step: measure it, and put samples in where it strays (a
@@ -1484,6 +1620,11 @@ void Tracer::trace(const Pending& p)
         break;
       }
       // Accept the step.
+      if (swept || check)
+      {
+        emptyX = x1;
+        emptyR = y1.r;
+      }
       advanceTo(y1);
       last = { a.g, b.g, y1.sa, y1.sb, ga1, gb1 };
       aLeftStart = aLeftStart || a.g != p.a.g || std::abs(a.s - p.a.s) > 10 * CoverageSlop;
@@ -1493,6 +1634,12 @@ void Tracer::trace(const Pending& p)
       {
         sinceCheck = 0;
         good = Checkpoint{ a, b, y, seg.samples.size(), Cover.mark() };
+      }
+      if (ontoNode >= 0)
+      {
+        seg.samples.back().x = Graph.nodes[ontoNode].sample.x;
+        seg.samples.back().radius = Graph.nodes[ontoNode].sample.radius;
+        finish(ontoNode);
       }
       if (joining)
       {
