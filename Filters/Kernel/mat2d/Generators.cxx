@@ -355,6 +355,7 @@ SweepContact Generators::firstContact(const Vec2& x0, double r0, const Vec2& x1,
   // to it (the arcs bound it from inside those chords), padded by how far the given
   // radii may be from the empty ones'.
   Box3 slivers[2];
+  Vec2 corners[2][3]; // each sliver's triangle (counter-clockwise)
   bool local = endsEmpty >= 0.0 && ea >= 0 && eb >= 0 && List[touchA].straight && List[touchB].straight;
   const double d = b.norm();
   if (local)
@@ -375,16 +376,42 @@ SweepContact Generators::firstContact(const Vec2& x0, double r0, const Vec2& x1,
         auto foot = [&](const Vec2& x) { return Vec2(e0 + (x - e0).dot(dir) * dir); };
         auto fromLine = [&](const Vec2& x) { return std::abs(dir.x() * (x - e0).y() - dir.y() * (x - e0).x()); };
         const Vec2& apex = fromLine(crossing[0]) <= fromLine(crossing[1]) ? crossing[0] : crossing[1];
-        for (const Vec2& p : { foot(x0), foot(x1), apex })
-          slivers[side].extend(Vec3(p.x(), p.y(), 0.0));
+        Vec2* tri = corners[side];
+        tri[0] = foot(x0);
+        tri[1] = foot(x1);
+        tri[2] = apex;
+        const Vec2 u1 = tri[1] - tri[0], u2 = tri[2] - tri[0];
+        if (u1.x() * u2.y() - u1.y() * u2.x() < 0.0)
+          std::swap(tri[1], tri[2]);
+        for (int k = 0; k < 3; ++k)
+          slivers[side].extend(Vec3(tri[k].x(), tri[k].y(), 0.0));
         slivers[side].min().array() -= pad;
         slivers[side].max().array() += pad;
       }
     }
   }
+  // A box meets a (padded) triangle unless one of the triangle's sides, or its bounding
+  // box, separates them: a long sliver lies along a line any way it turns, its bounding
+  // box does not.
+  const double pad = 2.0 * std::max(endsEmpty, 0.0) + 1e-12 * (size2D() + reach);
+  auto meets = [&](const Box3& box, int side) {
+    if (!box.intersects(slivers[side]))
+      return false;
+    const Vec2 c = 0.5 * (box.min() + box.max()).head<2>(), half = 0.5 * (box.max() - box.min()).head<2>();
+    const Vec2* tri = corners[side];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec2 e = tri[(k + 1) % 3] - tri[k];
+      const Vec2 n(e.y(), -e.x()); // outward for a counter-clockwise triangle
+      const double length = n.norm();
+      if (length > 0.0 && n.dot(c - tri[k]) - std::abs(n.x()) * half.x() - std::abs(n.y()) * half.y() > pad * length)
+        return false;
+    }
+    return true;
+  };
   auto reaches = [&](const Box3& box) {
     if (local)
-      return box.intersects(slivers[0]) || box.intersects(slivers[1]);
+      return meets(box, 0) || meets(box, 1);
     const Vec3 nearest = q.cwiseMax(box.min()).cwiseMin(box.max());
     return (nearest - q).squaredNorm() <= reach * reach;
   };

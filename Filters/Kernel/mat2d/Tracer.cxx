@@ -353,7 +353,7 @@ private:
   /// The nodes with a footpoint on each generator: a segment between two straight edges
   /// that runs into a node found before (a regular polygon's centre, reached from every
   /// side) lands on it instead of sweeping past it.
-  std::vector<std::vector<int>> NodesByGenerator;
+  std::vector<std::vector<std::pair<int, double>>> NodesByGenerator; ///< (node, footpoint parameter)
   /// The node on the bisector of the fronts' generators (straight edges) between states y
   /// and y1 — footpoints on both, ahead of both fronts, at the interpolated state — the
   /// first one along; −1 when none. `at` receives its state.
@@ -448,7 +448,7 @@ int Tracer::addNode(const Vec2& x, double r, MedialPointType type, std::vector<B
   const int id = static_cast<int>(Graph.nodes.size()) - 1;
   NodeGrid[cellKey(cellIndex(x.x()), cellIndex(x.y()))].push_back(id);
   for (const BoundaryLocation& f : Graph.nodes[id].footpoints)
-    NodesByGenerator[f.g].push_back(id);
+    NodesByGenerator[f.g].push_back({ id, f.s });
   return id;
 }
 
@@ -461,20 +461,18 @@ int Tracer::nodeAhead(int ga, int gb, const BisectorState& y, const BisectorStat
     return -1;
   int best = -1;
   double first = INFINITY;
-  for (const int id : NodesByGenerator[ga])
+  // (A step that joins boundary traced before lands on its start to rounding.)
+  for (const auto& [id, sa] : NodesByGenerator[ga])
   {
-    const MedialNode& n = Graph.nodes[id];
-    const BoundaryLocation *fa = nullptr, *fb = nullptr;
-    for (const BoundaryLocation& f : n.footpoints)
-    {
-      // (A step that joins boundary traced before lands on its start to rounding.)
-      if (f.g == ga && f.s > y.sa && f.s <= y1.sa + 1e-9)
-        fa = &f;
-      if (f.g == gb && f.s < y.sb && f.s >= y1.sb - 1e-9)
-        fb = &f;
-    }
-    if (!fa || !fb)
+    if (!(sa > y.sa && sa <= y1.sa + 1e-9))
       continue;
+    double sb = NaN;
+    for (const auto& [other, s] : NodesByGenerator[gb])
+      if (other == id && s < y.sb && s >= y1.sb - 1e-9)
+        sb = s;
+    if (std::isnan(sb))
+      continue;
+    const MedialNode& n = Graph.nodes[id];
     // Touching both lines, the node is on their bisector (to its own precision): where
     // along this step, and is its radius the step's there?
     const double tau = (n.sample.x - x0).dot(step) / length2;
@@ -484,7 +482,7 @@ int Tracer::nodeAhead(int ga, int gb, const BisectorState& y, const BisectorStat
     {
       first = tau;
       best = id;
-      at = BisectorState{ fa->s, fb->s, n.sample.radius };
+      at = BisectorState{ sa, sb, n.sample.radius };
     }
   }
   return best;
@@ -663,7 +661,7 @@ void Tracer::mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpo
     if (!isKnown)
     {
       n.footpoints.push_back(f);
-      NodesByGenerator[f.g].push_back(node);
+      NodesByGenerator[f.g].push_back({ node, f.s });
       known.emplace(f.g, f.point);
       added = true;
     }
@@ -1289,11 +1287,42 @@ void Tracer::trace(const Pending& p)
         // most this margin, when it was made) or by its own test, which stops at the first
         // piece inside when it is not — leave only the slivers beside the touched lines.
         const double moved = (x0 - emptyX).norm() + std::abs(y.r - emptyR);
-        const bool endsEmpty =
-          moved <= 0.1 * diskMargin(y.r) && (ontoNode >= 0 || emptyDisk(x1, y1.r, a.g, y1.sa, b.g, y1.sb));
-        const double r0 = y.r - diskMargin(y.r) - (endsEmpty ? moved : 0.0);
-        const SweepContact c =
-          G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t, endsEmpty ? 0.0 : -1.0);
+        const bool startEmpty = moved <= 0.1 * diskMargin(y.r);
+        const double r0 = y.r - diskMargin(y.r) - (startEmpty ? moved : 0.0);
+        // The step's state at τ (the bisector is straight and its state linear along it).
+        auto xAt = [&](double tau) { return Vec2(x0 + tau * (x1 - x0)); };
+        auto rAt = [&](double tau) { return y.r + tau * (y1.r - y.r); };
+        auto emptyAt = [&](double tau) {
+          return emptyDisk(xAt(tau), rAt(tau), a.g, y.sa + tau * (y1.sa - y.sa), b.g, y.sb + tau * (y1.sb - y.sb));
+        };
+        SweepContact c = SweepContact::Clear;
+        if (!startEmpty)
+          c = G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t);
+        else if (ontoNode >= 0 || emptyAt(1.0))
+          c = G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t, 0.0);
+        else
+        {
+          // The end disk holds a piece: a third entity comes in on the way. Halve the
+          // stretch where it does by disk tests (from the empty start, to the end), sweep
+          // what lies before as slivers between empty disks and the rest in full — a full
+          // sweep reaches every edge within half its length of its middle, a disk only
+          // those within its radius.
+          double lo = 0.0, hi = 1.0;
+          for (int halving = 0; halving < 4 && (hi - lo) * (x1 - x0).norm() > 4.0 * y1.r; ++halving)
+            (emptyAt(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+          if (lo > 0.0)
+            c = G.firstContact(x0, r0, xAt(lo), rAt(lo) - diskMargin(rAt(lo)), a.g, b.g, t, 0.0);
+          if (c == SweepContact::Contact)
+            t *= lo;
+          // Then from lo to hi, or (should the margins disagree) on to the step's end.
+          for (const double end : { hi, 1.0 })
+            if (c == SweepContact::Clear)
+            {
+              c = G.firstContact(xAt(lo), rAt(lo) - diskMargin(rAt(lo)), xAt(end), rAt(end) - diskMargin(rAt(end)), a.g,
+                b.g, t);
+              t = lo + t * (end - lo);
+            }
+        }
         if (c == SweepContact::Undecided)
         {
           noSweepA = a.g;
