@@ -350,10 +350,11 @@ SweepContact Generators::firstContact(const Vec2& x0, double r0, const Vec2& x1,
   const Vec3 q(middle.x(), middle.y(), 0.0);
   const double reach = 0.5 * b.norm() + std::max(r0, r1);
   // With both end disks empty, what is left of the sweep (the convex hull of the two end
-  // disks) are the two slivers between them and the touched lines: each lies in the
-  // triangle of the feet of x0 and x1 on its line and the end circles' crossing nearer
-  // to it (the arcs bound it from inside those chords), padded by how far the given
-  // radii may be from the empty ones'.
+  // disks) are the two slivers between them and their common tangent beside each touched
+  // line: each lies in the triangle of the tangent's touch points and the end circles'
+  // crossing nearer to it (the arcs bound it from inside those chords). The tangent runs
+  // inside the line by the disks' margin: the triangle is taken from the feet of x0 and
+  // x1 on the line itself, padded by twice that margin.
   Box3 slivers[2];
   Vec2 corners[2][3]; // each sliver's triangle (counter-clockwise)
   bool local = endsEmpty >= 0.0 && ea >= 0 && eb >= 0 && List[touchA].straight && List[touchB].straight;

@@ -110,9 +110,9 @@ public:
   /// samples left unseen. Undecided when a curved edge comes within the sweep's reach, or
   /// when the radius changes as fast as the centre moves (no MAT segment does).
   ///
-  /// `endsEmpty` ≥ 0 says both end disks are known to be empty (their radii less this
-  /// much are exactly those found empty): then only what the sweep covers beyond them is
-  /// searched — two
+  /// `endsEmpty` ≥ 0 says both end disks (of the radii given) are known to be empty and
+  /// stay this much inside the touched lines (the margin taken off their radii): then only
+  /// what the sweep covers beyond them is searched — two
   /// slivers along the touched lines, each within the triangle of the lines' feet of x0
   /// and x1 and the end circles' crossing next to that line — so a step onto a node found
   /// before (a regular polygon's centre, reached from every side) costs the edges near its

@@ -1299,7 +1299,7 @@ void Tracer::trace(const Pending& p)
         if (!startEmpty)
           c = G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t);
         else if (ontoNode >= 0 || emptyAt(1.0))
-          c = G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t, 0.0);
+          c = G.firstContact(x0, r0, x1, y1.r - diskMargin(y1.r), a.g, b.g, t, diskMargin(std::max(y.r, y1.r)) + moved);
         else
         {
           // The end disk holds a piece: a third entity comes in on the way. Halve the
@@ -1311,7 +1311,8 @@ void Tracer::trace(const Pending& p)
           for (int halving = 0; halving < 4 && (hi - lo) * (x1 - x0).norm() > 4.0 * y1.r; ++halving)
             (emptyAt(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
           if (lo > 0.0)
-            c = G.firstContact(x0, r0, xAt(lo), rAt(lo) - diskMargin(rAt(lo)), a.g, b.g, t, 0.0);
+            c = G.firstContact(x0, r0, xAt(lo), rAt(lo) - diskMargin(rAt(lo)), a.g, b.g, t,
+              diskMargin(std::max(y.r, rAt(lo))) + moved);
           if (c == SweepContact::Contact)
             t *= lo;
           // Then from lo to hi, or (should the margins disagree) on to the step's end.
