@@ -38,32 +38,14 @@ public:
   template <typename Visit>
   bool anyWithin(const Vec3& p, double d, Visit&& visit) const
   {
-    if (Nodes.empty() || !(d >= 0.0))
+    if (!(d >= 0.0))
       return false;
     const double d2 = d * d;
-    int stack[2 * MaxTreeDepth + 8];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0)
-    {
-      const Node& node = Nodes[stack[--top]];
-      if (squaredDistanceToBox(node.box, p) > d2)
-        continue;
-      if (node.left < 0)
-      {
-        for (int k = node.first; k < node.first + node.count; ++k)
-          if (squaredDistanceToBox(Boxes[Order[k]], p) <= d2 && visit(Order[k]))
-            return true;
-        continue;
-      }
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    return false;
+    return anyWhere([&](const Box3& box) { return squaredDistanceToBox(box, p) <= d2; }, visit);
   }
 
-  /// The same walk for any region: `reaches(box)` is true for every box that meets it
-  /// (and may be for others); items' boxes are asked too.
+  /// The walk of anyWithin for any region: `reaches(box)` is true for every box that meets
+  /// it (and may be for others); items' boxes are asked too.
   template <typename Reaches, typename Visit>
   bool anyWhere(Reaches&& reaches, Visit&& visit) const
   {

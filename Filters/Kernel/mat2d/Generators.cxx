@@ -285,7 +285,9 @@ double firstSegmentContact(const Vec2& x0, const Vec2& b, double r0, double k, c
   // The segment is no nearer than its line: when the centres stay on one side of it and
   // farther than the radius at both ends (|d| − r is linear there), no disk reaches it —
   // most edges a sweep's boxes bring, settled without a square root.
-  const double d0 = Vec2(-edge.y(), edge.x()).dot(x0 - e0), d1 = d0 + Vec2(-edge.y(), edge.x()).dot(b);
+  // (d0, dd: the signed distance of x0 from the line and its change along b, times |edge|.)
+  const Vec2 normal(-edge.y(), edge.x());
+  const double d0 = normal.dot(x0 - e0), dd = normal.dot(b), d1 = d0 + dd;
   if ((d0 > 0.0) == (d1 > 0.0) && d0 * d0 > r0 * std::abs(r0) * length2 &&
     d1 * d1 > (r0 + k) * std::abs(r0 + k) * length2)
     return INFINITY;
@@ -310,8 +312,7 @@ double firstSegmentContact(const Vec2& x0, const Vec2& b, double r0, double k, c
   // with the foot's parameter u0 + t du in [0, 1].
   if (length2 > 0.0)
   {
-    const Vec2 n = Vec2(-edge.y(), edge.x()) / std::sqrt(length2);
-    const double d0 = n.dot(x0 - e0), dd = n.dot(b);
+    const double length = std::sqrt(length2);
     const double u0 = (x0 - e0).dot(edge) / length2, du = b.dot(edge) / length2;
     double lo = 0.0, hi = 1.0;
     auto atMost = [&](double slope, double bound) { // slope · t ≤ bound
@@ -322,8 +323,8 @@ double firstSegmentContact(const Vec2& x0, const Vec2& b, double r0, double k, c
       else if (bound < 0.0)
         hi = -1.0;
     };
-    atMost(dd - k, r0 - d0);
-    atMost(-(dd + k), r0 + d0);
+    atMost(dd / length - k, r0 - d0 / length);
+    atMost(-(dd / length + k), r0 + d0 / length);
     atMost(du, 1.0 - u0);
     atMost(-du, u0);
     if (lo <= hi && r0 + lo * k > 0.0)
