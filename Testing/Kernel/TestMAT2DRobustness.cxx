@@ -223,6 +223,59 @@ TEST(MAT2DRobustness, NearDegenerateCentresOfRegularPolygons)
   }
 }
 
+// Regular polygons of many edges whose centres the rounding of coordinates far from the
+// origin (or a jitter of the vertices) splits into a tree of n − 2 branch points spread
+// over up to 1e-2 of the size, joined by segments far shorter than the disk tests can
+// resolve: the lines' medial tree (mat2d/LineCluster) places them. Until 2026-11-29 a
+// 69-gon moved 5e6 × its size swept its boundary twice, a 500-gon and a gear of 1,000
+// edges so moved stopped with "no segment could be started", and jittered polygons of
+// 100 … 1,000 edges (jitter 1e-11 … 1e-8) failed the same ways.
+TEST(MAT2DRobustness, ClustersOfManyNearlyEquidistantEdges)
+{
+  auto polygon = [](int n, double inner) {
+    Vec3List c;
+    for (int k = 0; k < n; ++k)
+    {
+      const double r = (k / 2) % 2 ? inner : 1.0; // inner < 1: a gear
+      c.push_back(Vec3(r * std::cos(2 * M_PI * k / n), r * std::sin(2 * M_PI * k / n), 0.0));
+    }
+    return makePolygon(c);
+  };
+  struct Case
+  {
+    int n;
+    double inner, offset;
+  };
+  for (const Case& c : { Case{ 69, 1.0, 5e6 }, Case{ 80, 1.0, 5e6 }, Case{ 500, 1.0, 5e6 }, Case{ 999, 1.0, 1e7 },
+         Case{ 1000, 0.85, 5e6 }, Case{ 2000, 1.0, 1e6 } })
+  {
+    ShapeMotion m;
+    m.angle = 0.4;
+    m.offset = Vec3(c.offset, -0.7 * c.offset, 0.0);
+    SCOPED_TRACE(std::to_string(c.n) + "-gon (inner radius " + std::to_string(c.inner) + ") " + m.describe());
+    const Result r = compute(m.apply(polygon(c.n, c.inner)));
+    EXPECT_TRUE(verified(r));
+    EXPECT_EQ(r.graph.componentCount(), 1);
+  }
+  RandomEngine rng(29);
+  for (const auto& [n, jitter] : { std::pair{ 100, 1e-11 }, std::pair{ 300, 1e-10 }, std::pair{ 1000, 1e-9 },
+         std::pair{ 4000, 1e-8 } })
+  {
+    const RandomShape shape = perturbedRegularPolygon(rng, n, jitter);
+    SCOPED_TRACE(shape.description);
+    const Result r = compute(shape.curves);
+    EXPECT_TRUE(verified(r));
+    EXPECT_EQ(r.graph.componentCount(), 1);
+  }
+  // Unmoved, a regular polygon's centre is still one node of degree n (its tree, split
+  // by the rounding of cos and sin only, lies within the node merge distance).
+  const Result regular = compute(polygon(1000, 1.0));
+  EXPECT_TRUE(verified(regular));
+  const auto centre = std::max_element(regular.graph.nodes.begin(), regular.graph.nodes.end(),
+    [](const MedialNode& a, const MedialNode& b) { return a.footpoints.size() < b.footpoints.size(); });
+  EXPECT_EQ(centre->footpoints.size(), 1000u);
+}
+
 // Found by FuzzNURBSJson: a full circle of four rational quadratic arcs whose weights are
 // off by up to 0.5%. The shrinking ball stopped short of its maximal disk (a disk that was
 // not empty, one footpoint) and the graph came out in pieces with an error of 0.11 of the

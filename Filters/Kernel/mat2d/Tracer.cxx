@@ -2,6 +2,8 @@
 
 #include "common/InputError.h"
 #include "mat2d/Bisector.h"
+#include "mat2d/LineCluster.h"
+#include "common/UnionFind.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -304,6 +306,34 @@ private:
   };
   std::vector<CachedWedges> WedgeCache;
   void mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpoints);
+  /// Near a branch point where four or more straight edges come within ClusterSpread of
+  /// its radius (a near-regular polygon's centre, split by jitter or rounding: see
+  /// LineCluster.h), the medial tree of their lines, as far as it is the MAT.
+  struct ClusterPlan
+  {
+    struct Node
+    {
+      Vec2 x;
+      double r;
+      std::vector<BoundaryLocation> feet;
+    };
+    std::vector<Node> nodes;
+    struct Segment
+    {
+      int from, to;        ///< nodes
+      BoundaryLocation a0, b0, a1, b1; ///< feet at both ends: a moves forward, b backward
+    };
+    std::vector<Segment> segments;
+    int incoming = -1; ///< the node the segment that found the cluster ends on; −1: no plan
+  };
+  /// The plan around branch point (xb, r) found by the segment of straight edges ga, gb:
+  /// the tree's nodes within ClusterSpread / 2 of it (where no other boundary point can
+  /// reach their disks and every line's foot stays on its edge) that are not in the graph
+  /// yet, and the tree's segments between them. No plan when the point is no such
+  /// cluster or the tree does not have the segment of ga and gb end near it.
+  ClusterPlan planLineCluster(const Vec2& xb, double r, int ga, int gb) const;
+  /// Adds the plan's nodes and segments (the boundary they sweep covered); their ids.
+  std::vector<int> commitLineCluster(const ClusterPlan& plan);
   void trace(const Pending& p);
   bool emptyDisk(const Vec2& x, double r) const;
   /// The same for a point of the bisector of generators ga, gb touching them at sa, sb.
@@ -368,6 +398,14 @@ private:
   /// node they reach within 1e-6, so a cluster can come out in pieces. Pieces closer than
   /// this are one node of degree k (the issue allows either form).
   static constexpr double ClusterReach = 1e-7;
+  /// Straight edges within this fraction of a branch point's radius make it a cluster
+  /// resolved by their lines' medial tree (planLineCluster).
+  static constexpr double ClusterSpread = 0.05;
+  /// A branch point is looked at as a cluster when four boundary contacts lie within this
+  /// fraction of its radius.
+  static constexpr double ClusterTrigger = 1e-6;
+  /// Branch points of a cluster's tree closer than this fraction of the size are one node.
+  static constexpr double TieMerge = 1e-12;
   long long cellKey(long long i, long long j) const { return i * 73856093LL ^ j * 19349663LL; }
   /// The node grid's cell of coordinate v. Points beyond 1e9 cells (a trace gone wild on
   /// hostile input, or NaN) share the border cells: the distances decide, and neither the
@@ -461,14 +499,20 @@ int Tracer::nodeAhead(int ga, int gb, const BisectorState& y, const BisectorStat
     return -1;
   int best = -1;
   double first = INFINITY;
-  // (A step that joins boundary traced before lands on its start to rounding.)
+  // (A step that joins boundary traced before lands on its start to rounding. A node
+  // standing for branch points within NodeMerge of one another, a regular polygon's
+  // centre, is off this pair's bisector by as much: its feet may lie that far past, and
+  // where the lines are almost parallel the step clipped at them ends short of it by that
+  // over the angle — within the 1e-7 of the size the node may be off the step anyway.)
+  auto slack = [&](int g) { return 1e-9 + 2.0 * NodeMerge * L / std::max(1e-300, G.evaluate(g, 0.5).dp.norm()); };
+  const double slackA = slack(ga), slackB = slack(gb);
   for (const auto& [id, sa] : NodesByGenerator[ga])
   {
-    if (!(sa > y.sa && sa <= y1.sa + 1e-9))
+    if (!(sa > y.sa && sa <= y1.sa + slackA))
       continue;
     double sb = NaN;
     for (const auto& [other, s] : NodesByGenerator[gb])
-      if (other == id && s < y.sb && s >= y1.sb - 1e-9)
+      if (other == id && s < y.sb && s >= y1.sb - slackB)
         sb = s;
     if (std::isnan(sb))
       continue;
@@ -477,7 +521,10 @@ int Tracer::nodeAhead(int ga, int gb, const BisectorState& y, const BisectorStat
     // along this step, and is its radius the step's there?
     const double tau = (n.sample.x - x0).dot(step) / length2;
     const Vec2 x = x0 + tau * step;
-    if (tau > 0.0 && tau <= 1.0 + 1e-9 && tau < first && (x - n.sample.x).norm() <= 1e-7 * L &&
+#ifdef EXACTMAT_TRACE_DEBUG
+    std::fprintf(stderr, "  nodeAhead candidate %d tau %.17g off %.3g dr %.3g\n", id, tau, (x - n.sample.x).norm(), y.r + tau * (y1.r - y.r) - n.sample.radius);
+#endif
+    if (tau > 0.0 && tau <= 1.0 + 1e-9 + 1e-7 * L / std::sqrt(length2) && tau < first && (x - n.sample.x).norm() <= 1e-7 * L &&
       std::abs(y.r + tau * (y1.r - y.r) - n.sample.radius) <= 1e-7 * L)
     {
       first = tau;
@@ -673,6 +720,222 @@ void Tracer::mergeIntoNode(int node, const std::vector<BoundaryLocation>& footpo
   if (n.footpoints.size() >= 3 && n.type == MedialPointType::Normal)
     n.type = MedialPointType::Branch;
   spawnWedges(node);
+}
+
+Tracer::ClusterPlan Tracer::planLineCluster(const Vec2& xb, double r, int ga, int gb) const
+{
+  ClusterPlan plan;
+  if (!G.straight(ga) || !G.straight(gb) || !(r > 0.0))
+    return plan;
+  // The members: feet on the open middle of straight edges within r + spread of xb, where
+  // spread stops short of anything else (a corner, a curved edge, an edge's end: the gaps'
+  // reflex corners of a gear). Then within reach = spread / 2 of xb no disk of the lines'
+  // tree (radius ≤ r + reach) meets anything but members (the others are farther than
+  // r + spread − reach), and the tree is the MAT there.
+  auto isLine = [&](const BoundaryLocation& f) {
+    return G[f.g].kind == GeneratorKind::Edge && G.straight(f.g) && f.s > 0.0 && f.s < 1.0;
+  };
+  // A cluster of lines at all: four or more contacts within ClusterTrigger of the radius,
+  // every one on a line (a cheap search — its disk reaches few pieces — before the wide
+  // ones). The cluster's own scale is its radius, not the domain's (a saw-tooth's teeth).
+  const std::vector<BoundaryLocation> close = G.footpointsWithin(xb, r * (1.0 + ClusterTrigger));
+  if (close.size() < 4 || !std::all_of(close.begin(), close.end(), isLine))
+    return plan;
+  // An exact tie of a few lines (a saw-tooth's symmetric nodes, a square's centre) is one
+  // node of degree k the ordinary way, without the wide searches below.
+  const bool exactTie = std::all_of(close.begin(), close.end(),
+    [&](const BoundaryLocation& f) { return (f.point - xb).norm() <= r * (1.0 + 1e-10) + 1e-11 * L; });
+  if (exactTie && close.size() <= 8)
+    return plan;
+  // Widening in two steps: most clusters have something else close (a saw-tooth's corners).
+  std::vector<BoundaryLocation> near;
+  double spread = 0.0;
+  for (const double reachOut : { 1e-4 * r, ClusterSpread * r })
+  {
+    near = G.footpointsWithin(xb, r + reachOut);
+    spread = reachOut;
+    for (const BoundaryLocation& f : near)
+      if (!isLine(f))
+        spread = std::min(spread, (f.point - xb).norm() - r);
+    if (spread < reachOut)
+      break;
+  }
+  if (!(spread >= 1e-9 * L))
+    return plan;
+  const double reach = 0.5 * spread;
+  std::vector<int> gen;
+  std::vector<ClusterLine> lines;
+  std::vector<Vec2> origin, along;
+  for (const BoundaryLocation& f : near)
+  {
+    if (!isLine(f) || !((f.point - xb).norm() < r + spread))
+      continue;
+    if (std::find(gen.begin(), gen.end(), f.g) != gen.end())
+      return plan;
+    const GeneratorPoint p0 = G.evaluate(f.g, 0.0), p1 = G.evaluate(f.g, 1.0);
+    gen.push_back(f.g);
+    origin.push_back(p0.p);
+    along.push_back(p1.p - p0.p);
+    // Relative to xb and r: the offsets are the small differences that decide the tree.
+    lines.push_back({ p0.n, p0.n.dot(xb - p0.p) - r });
+  }
+  const auto ia = std::find(gen.begin(), gen.end(), ga), ib = std::find(gen.begin(), gen.end(), gb);
+  if (gen.size() < 4 || ia == gen.end() || ib == gen.end())
+    return plan;
+  const int la = static_cast<int>(ia - gen.begin()), lb = static_cast<int>(ib - gen.begin());
+  const ClusterTree tree = lineClusterTree(lines);
+  const int nodes = static_cast<int>(tree.nodes.size());
+  if (nodes == 0)
+    return plan;
+  // The tree's node where the segment of ga and gb ends: nearest xb on an edge of that pair.
+  int inNode = -1;
+  for (const ClusterEdge& e : tree.edges)
+  {
+    if (!((e.lineA == la && e.lineB == lb) || (e.lineA == lb && e.lineB == la)))
+      continue;
+    for (const int n : { e.node0, e.node1 })
+      if (n >= 0 && (inNode < 0 || tree.nodes[n].x.norm() < tree.nodes[inNode].x.norm()))
+        inNode = n;
+  }
+  if (inNode < 0)
+    return plan;
+  // A tree within NodeMerge of that node is one node of degree k (a regular polygon's
+  // centre, split by the rounding of its vertices only): the verification cannot tell
+  // it from one. Otherwise only branch points that coincide to rounding are one node (an
+  // exact tie of four or more lines): a segment between two nodes must run the way its
+  // lines' feet move, which a node standing for a group wider than it would not bear out.
+  UnionFind merged(nodes);
+  const bool oneNode = std::all_of(tree.nodes.begin(), tree.nodes.end(),
+    [&](const ClusterNode& n) { return (n.x - tree.nodes[inNode].x).norm() <= NodeMerge * L; });
+  for (const ClusterEdge& e : tree.edges)
+    if (e.node1 >= 0 && (oneNode || (tree.nodes[e.node0].x - tree.nodes[e.node1].x).norm() <= TieMerge * L))
+      merged.unite(e.node0, e.node1);
+  std::vector<int> group(nodes, -1), representative;
+  std::vector<std::vector<int>> groupLines;
+  for (int n = 0; n < nodes; ++n)
+  {
+    const int root = merged.find(n);
+    if (group[root] < 0)
+    {
+      group[root] = static_cast<int>(representative.size());
+      representative.push_back(root);
+      groupLines.emplace_back();
+    }
+    group[n] = group[root];
+    for (const int l : tree.nodes[n].lines)
+      if (std::find(groupLines[group[n]].begin(), groupLines[group[n]].end(), l) == groupLines[group[n]].end())
+        groupLines[group[n]].push_back(l);
+  }
+  const int groups = static_cast<int>(representative.size());
+  const int in = group[inNode];
+  representative[in] = inNode;
+  // Each group's tree edges to other groups (the BFS below walks them once).
+  std::vector<std::vector<int>> edgesOf(groups);
+  for (size_t e = 0; e < tree.edges.size(); ++e)
+  {
+    const ClusterEdge& c = tree.edges[e];
+    if (c.node1 >= 0 && group[c.node0] != group[c.node1])
+    {
+      edgesOf[group[c.node0]].push_back(static_cast<int>(e));
+      edgesOf[group[c.node1]].push_back(static_cast<int>(e));
+    }
+  }
+  // Each group as a node: where it is, its radius, its feet (none off its edge).
+  std::vector<int> planned(groups, -2); // −2 not looked at, −1 refused, else plan index
+  auto place = [&](int k) {
+    if (planned[k] != -2)
+      return planned[k];
+    planned[k] = -1;
+    const Vec2 y = tree.nodes[representative[k]].x;
+    const Vec2 x = xb + y;
+    if (!(y.norm() <= reach) || findNode(x, NodeMerge * L) >= 0)
+      return -1;
+    double radius = INFINITY;
+    std::vector<BoundaryLocation> feet;
+    for (const int l : groupLines[k])
+    {
+      radius = std::min(radius, lines[l].normal.dot(y) + lines[l].offset);
+      const double s = (x - origin[l]).dot(along[l]) / along[l].squaredNorm();
+      if (!(s > 0.0 && s < 1.0))
+        return -1;
+      feet.push_back({ gen[l], s, origin[l] + s * along[l], lines[l].normal, false });
+    }
+    planned[k] = static_cast<int>(plan.nodes.size());
+    plan.nodes.push_back({ x, r + radius, std::move(feet) });
+    return planned[k];
+  };
+  if (place(in) < 0)
+    return plan;
+  // Out from there: the tree's segments between two nodes of the plan.
+  std::vector<int> stack{ in };
+  std::vector<bool> edgeDone(tree.edges.size(), false);
+  while (!stack.empty())
+  {
+    const int k = stack.back();
+    stack.pop_back();
+    for (const int e : edgesOf[k])
+    {
+      const ClusterEdge& c = tree.edges[e];
+      if (edgeDone[e])
+        continue;
+      const int other = group[c.node0] == k ? group[c.node1] : group[c.node0];
+      const bool known = planned[other] >= 0;
+      if (place(other) < 0)
+        continue;
+      edgeDone[e] = true;
+      const ClusterPlan::Node &u = plan.nodes[planned[k]], &v = plan.nodes[planned[other]];
+      auto footOn = [&](const ClusterPlan::Node& n, int l) {
+        for (const BoundaryLocation& f : n.feet)
+          if (f.g == gen[l])
+            return f;
+        return BoundaryLocation{};
+      };
+      BoundaryLocation a0 = footOn(u, c.lineA), a1 = footOn(v, c.lineA);
+      BoundaryLocation b0 = footOn(u, c.lineB), b1 = footOn(v, c.lineB);
+      // Front a moves forward along the boundary, b backward.
+      if (a1.s - a0.s < b1.s - b0.s)
+      {
+        std::swap(a0, b0);
+        std::swap(a1, b1);
+      }
+      plan.segments.push_back({ planned[k], planned[other], a0, b0, a1, b1 });
+      if (!known)
+        stack.push_back(other);
+    }
+  }
+  plan.incoming = planned[in];
+  return plan;
+}
+
+std::vector<int> Tracer::commitLineCluster(const ClusterPlan& plan)
+{
+  std::vector<int> ids;
+  for (const ClusterPlan::Node& n : plan.nodes)
+    ids.push_back(addNode(n.x, n.r, n.feet.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, n.feet));
+  for (const ClusterPlan::Segment& s : plan.segments)
+  {
+    MedialSegment seg;
+    seg.startNode = ids[s.from];
+    seg.endNode = ids[s.to];
+    seg.generators[0] = s.a0.g;
+    seg.generators[1] = s.b0.g;
+    for (const auto& [node, a, b] : { std::make_tuple(s.from, s.a0, s.b0), std::make_tuple(s.to, s.a1, s.b1) })
+    {
+      MedialSample m;
+      m.x = plan.nodes[node].x;
+      m.radius = plan.nodes[node].r;
+      m.foot[0] = a;
+      m.foot[1] = b;
+      seg.samples.push_back(m);
+    }
+    Cover.cover(s.a0.g, s.a0.s, s.a1.s, -1);
+    Cover.cover(s.b0.g, s.b0.s, s.b1.s, -1);
+    Graph.segments.push_back(std::move(seg));
+    const int sid = static_cast<int>(Graph.segments.size()) - 1;
+    Graph.nodes[ids[s.from]].segments.push_back(sid);
+    Graph.nodes[ids[s.to]].segments.push_back(sid);
+  }
+  return ids;
 }
 
 bool Tracer::lmpcBetween(
@@ -909,6 +1172,64 @@ void Tracer::trace(const Pending& p)
       return;
     }
   };
+  // A segment of two straight edges ending inside a cluster of branch points (see
+  // planLineCluster) ends where the lines' medial tree has it end — to rounding, or where
+  // the disk tests, blind within their margin, let it run past — and the tree's nodes and
+  // segments around it join the graph. False when there is no such cluster.
+  auto endInCluster = [&](const Vec2& xb, double r) {
+    const ClusterPlan plan = planLineCluster(xb, r, a.g, b.g);
+    if (plan.incoming < 0)
+      return false;
+    // The segment ends where the lines' tree has it end (to rounding, where the disk
+    // tests saw the cluster): its fronts and samples go there.
+    const ClusterPlan::Node& at = plan.nodes[plan.incoming];
+    double sa = a.s, sb = b.s;
+    for (const BoundaryLocation& f : at.feet)
+    {
+      sa = f.g == a.g ? f.s : sa;
+      sb = f.g == b.g ? f.s : sb;
+    }
+    // Not behind the segment's start (the disk tests may have run past the tree's node by
+    // as far as they are blind: their margin over the rate at which the third line comes in).
+    const BoundaryLocation &a0 = seg.samples.front().foot[0], &b0 = seg.samples.front().foot[1];
+    if ((a0.g == a.g && sa < a0.s) || (b0.g == b.g && sb > b0.s))
+      return false;
+    if (sa < a.s)
+      Cover.retreat(a.g, a.interval, sa, +1);
+    else
+      a.interval = Cover.cover(a.g, a.s, sa, a.interval);
+    if (sb > b.s)
+      Cover.retreat(b.g, b.interval, sb, -1);
+    else
+      b.interval = Cover.cover(b.g, sb, b.s, b.interval);
+    a.s = sa;
+    b.s = sb;
+    if (seg.samples.size() > 1)
+      seg.samples.pop_back();
+    while (seg.samples.size() > 1 &&
+      ((seg.samples.back().foot[0].g == a.g && seg.samples.back().foot[0].s > sa) ||
+        (seg.samples.back().foot[1].g == b.g && seg.samples.back().foot[1].s < sb)))
+      seg.samples.pop_back();
+    seg.samples.push_back(sampleOf(at.x, at.r));
+    const std::vector<int> ids = commitLineCluster(plan);
+    finish(ids[plan.incoming]);
+    // The wedges the tree's own segments fill are not traced again (a segment of
+    // 1e-12 sweeps less than the coverage can tell).
+    for (const int n : ids)
+    {
+      absorbContinuum(n);
+      for (const auto& [fa, fb] : wedgesOf(n))
+      {
+        const bool filled = std::any_of(Graph.nodes[n].segments.begin(), Graph.nodes[n].segments.end(), [&](int sid) {
+          const MedialSegment& t = Graph.segments[sid];
+          return (t.generators[0] == fa.g && t.generators[1] == fb.g) || (t.generators[0] == fb.g && t.generators[1] == fa.g);
+        });
+        if (!filled && !coveredAhead(fa.g, fa.s, +1) && !coveredAhead(fb.g, fb.s, -1))
+          Queue.push_back({ n, fa, fb });
+      }
+    }
+    return true;
+  };
   // The segment ends at the branch point (xb, r), its last sample: a new node with the
   // footpoints found there (and its wedges to trace), or the node already there, exactly
   // where it is. Distinct branch points of a cluster may lie 1e-8 apart: only points
@@ -935,6 +1256,8 @@ void Tracer::trace(const Pending& p)
       std::fprintf(stderr, " g%d@%.12g", f.g, f.s);
     std::fprintf(stderr, "\n");
 #endif
+    if (id < 0 && endInCluster(xb, r))
+      return;
     if (id < 0)
     {
       finish(addNode(xb, r, fps.size() >= 3 ? MedialPointType::Branch : MedialPointType::Normal, fps));
@@ -1673,8 +1996,19 @@ void Tracer::trace(const Pending& p)
       }
       if (joining)
       {
-        // Reached boundary traced before: this point is a node of the graph already.
+        // Reached boundary traced before: this point is a node of the graph already — or,
+        // in a cluster of branch points that the disk tests did not resolve, the tree's
+        // node of this pair, short of it.
         int id = findNode(x1, 1e-6 * L);
+        auto touches = [&](int n, int g) {
+          return std::any_of(Graph.nodes[n].footpoints.begin(), Graph.nodes[n].footpoints.end(),
+            [&](const BoundaryLocation& f) { return f.g == g; });
+        };
+        if (!(id >= 0 && touches(id, a.g) && touches(id, b.g)) && endInCluster(x1, y1.r))
+        {
+          accepted = true;
+          break;
+        }
         if (id < 0)
           id = nodeWithFeet(x1, 1e-4 * L, p.node, ga1.p, gb1.p);
 #ifdef EXACTMAT_TRACE_DEBUG
