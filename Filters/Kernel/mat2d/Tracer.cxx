@@ -1218,8 +1218,9 @@ void Tracer::trace(const Pending& p)
     for (const int n : ids)
     {
       absorbContinuum(n);
-      for (const auto& [fa, fb] : wedgesOf(n))
+      for (const auto& wedge : wedgesOf(n))
       {
+        const BoundaryLocation &fa = wedge.first, &fb = wedge.second;
         const bool filled = std::any_of(Graph.nodes[n].segments.begin(), Graph.nodes[n].segments.end(), [&](int sid) {
           const MedialSegment& t = Graph.segments[sid];
           return (t.generators[0] == fa.g && t.generators[1] == fb.g) || (t.generators[0] == fb.g && t.generators[1] == fa.g);
