@@ -315,6 +315,37 @@ int matTable()
     fillet.Add(0.3, TopoDS::Edge(ex.Current()));
     matRow("box, one edge filleted", fillet.Shape());
   }
+  {
+    // (Each of a box's edges in turn with a larger fillet: the spine's ends meet the caps at
+    // other heights; two opposite edges; every edge, whose corners are blended by spheres.)
+    TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 2, 3).Shape();
+    std::vector<TopoDS_Edge> edges;
+    for (TopExp_Explorer ex(box, TopAbs_EDGE); ex.More(); ex.Next())
+      if (std::none_of(edges.begin(), edges.end(), [&](const TopoDS_Edge& e) { return e.IsSame(ex.Current()); }))
+        edges.push_back(TopoDS::Edge(ex.Current()));
+    for (size_t k : { 1, 4 })
+    {
+      BRepFilletAPI_MakeFillet fillet(box);
+      fillet.Add(0.8, edges[k]);
+      matRow("box, edge " + std::to_string(k) + " filleted 0.8", fillet.Shape());
+    }
+    BRepFilletAPI_MakeFillet two(box);
+    two.Add(0.3, edges[0]);
+    two.Add(0.5, edges[2]);
+    matRow("box, two opposite edges filleted", two.Shape());
+    BRepFilletAPI_MakeFillet all(box);
+    for (const TopoDS_Edge& e : edges)
+      all.Add(0.3, e);
+    matRow("box, every edge filleted", all.Shape());
+  }
+  {
+    // (A fillet between faces that are not perpendicular: the wedge's sloping edge.)
+    const TopoDS_Shape wedge = BRepPrimAPI_MakeWedge(3, 2, 1, 1).Shape();
+    TopExp_Explorer ex(wedge, TopAbs_EDGE);
+    BRepFilletAPI_MakeFillet fillet(wedge);
+    fillet.Add(0.2, TopoDS::Edge(ex.Current()));
+    matRow("wedge, one edge filleted", fillet.Shape());
+  }
   return 0;
 }
 

@@ -542,7 +542,7 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
   // from their convex edges are parts of them.
   std::vector<MedialSheetMesh> caps;
   std::vector<std::string> capErrors;
-  for (const CapEnd& end : capEnds(complex))
+  for (const CapEnd& end : capEnds(complex, boundary, generators))
   {
     capErrors.emplace_back();
     try

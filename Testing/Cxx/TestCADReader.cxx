@@ -13,6 +13,7 @@
 #include "TestHelpers.h"
 
 #include "brep/Boundary3D.h"
+#include "medial/MedialComplex.h"
 #include "shapes/Catalogue.h"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -31,6 +32,7 @@
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRepPrimAPI_MakeWedge.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
@@ -683,6 +685,97 @@ TEST(vtkCADBoundaryReader, LPrismWithSquareLegsIsComplete)
   EXPECT_TRUE(sheets->GetVerificationPassed());
   EXPECT_EQ(sheets->GetNumberOfFailedSheets(), 0);
   EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-9);
+}
+
+TEST(vtkCADBoundaryReader, FilletedEdgesAreComplete)
+{
+  // A box (4 x 2 x 3) with a filleted edge, as CAD rounds one: the sheet of the two faces
+  // the fillet rounds ends at the fillet's spine, a centre curve of radius = the fillet's
+  // (its balls touch the fillet's whole arc), from the cap below to the cap above; where it
+  // meets a cap, the sheet of the fillet and the cap is a cone with its apex on its border,
+  // bounded by the fillet's arc (radius 0) and the balls along the two smooth edges where
+  // the fillet meets the faces it rounds. Until 2026-11-29 that sheet was filled as the
+  // sheet of two faces at a convex edge, which it is not (the fillet's faces covered 86 %:
+  // flagged). Also a larger fillet on another edge, two opposite edges of two radii, and
+  // the wedge's sloping edge (faces not perpendicular).
+  struct Case
+  {
+    std::string name;
+    TopoDS_Shape shape;
+    int centreCurves;
+  };
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 2, 3).Shape();
+  std::vector<TopoDS_Edge> edges;
+  for (TopExp_Explorer ex(box, TopAbs_EDGE); ex.More(); ex.Next())
+    if (std::none_of(edges.begin(), edges.end(), [&](const TopoDS_Edge& e) { return e.IsSame(ex.Current()); }))
+      edges.push_back(TopoDS::Edge(ex.Current()));
+  auto filleted = [](const TopoDS_Shape& solid, const std::vector<std::pair<double, TopoDS_Edge>>& rounds) {
+    BRepFilletAPI_MakeFillet fillet(solid);
+    for (const auto& [radius, edge] : rounds)
+      fillet.Add(radius, edge);
+    return fillet.Shape();
+  };
+  const TopoDS_Shape wedge = BRepPrimAPI_MakeWedge(3, 2, 1, 1).Shape();
+  const std::vector<Case> cases{ { "one-edge", filleted(box, { { 0.3, edges[0] } }), 1 },
+    { "edge-4-by-0.8", filleted(box, { { 0.8, edges[4] } }), 1 },
+    { "two-edges", filleted(box, { { 0.3, edges[0] }, { 0.5, edges[2] } }), 2 },
+    { "wedge", filleted(wedge, { { 0.2, TopoDS::Edge(TopExp_Explorer(wedge, TopAbs_EDGE).Current()) } }), 1 } };
+  for (const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const std::string file = output("cad-fillet-" + c.name + ".step");
+    writeStep(c.shape, file);
+    vtkNew<vtkCADBoundaryReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkMAT3DFilter> mat;
+    mat->SetInputConnection(reader->GetOutputPort());
+    vtkNew<vtkSheetInterpolator> sheets;
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceConnection(reader->GetOutputPort());
+    auto errors = ErrorRecorder::watch(sheets);
+    auto matErrors = ErrorRecorder::watch(mat);
+    sheets->Update();
+    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
+    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    EXPECT_TRUE(mat->GetVerificationPassed());
+    EXPECT_EQ(mat->GetNumberOfTopologyProblems(), 0);
+    EXPECT_EQ(mat->GetNumberOfJunctions(), 4);
+    EXPECT_EQ(mat->GetNumberOfSeams(), 12);
+    EXPECT_EQ(mat->GetNumberOfCentreCurves(), c.centreCurves);
+    EXPECT_TRUE(sheets->GetVerificationPassed());
+    EXPECT_EQ(sheets->GetNumberOfFailedSheets(), 0);
+    EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-3);
+    if (c.name != "one-edge")
+      continue;
+    // The spine in closed form: x = y = 0.3, r = 0.3, from z = 0.3 to 2.7 — where a ball
+    // of radius 0.3 touches the caps. The seams from the box's corners at x = y = z end on it.
+    vtkPolyData* out = mat->GetOutput();
+    vtkDataArray* type = out->GetCellData()->GetArray(arrays::ElementType);
+    vtkDataArray* radius = out->GetPointData()->GetArray(arrays::Radius);
+    double lowest = INFINITY, highest = -INFINITY;
+    int points = 0;
+    for (vtkIdType cell = 0; cell < out->GetNumberOfCells(); ++cell)
+    {
+      if (static_cast<int>(type->GetTuple1(cell)) != static_cast<int>(MedialElementType::CentreCurve))
+        continue;
+      vtkNew<vtkIdList> ids;
+      out->GetCellPoints(cell, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        double x[3];
+        out->GetPoint(ids->GetId(k), x);
+        EXPECT_NEAR(x[0], 0.3, 1e-10);
+        EXPECT_NEAR(x[1], 0.3, 1e-10);
+        EXPECT_NEAR(radius->GetTuple1(ids->GetId(k)), 0.3, 1e-10);
+        lowest = std::min(lowest, x[2]);
+        highest = std::max(highest, x[2]);
+        ++points;
+      }
+    }
+    EXPECT_GT(points, 2);
+    EXPECT_NEAR(lowest, 0.3, 1e-9);
+    EXPECT_NEAR(highest, 2.7, 1e-9);
+  }
 }
 
 TEST(vtkCADBoundaryReader, PlanarFaceMATIsTheCatalogueMAT)

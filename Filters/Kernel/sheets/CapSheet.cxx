@@ -74,7 +74,9 @@ private:
   double canalDistance(const Vec3& x, CanalFoot& foot, bool local) const;
   bool emptyBall(const Vec3& x, double radius) const;
   bool solve(const Vec2& w, double guess, const CanalFoot* seed, CapBall& ball) const;
-  std::vector<Vec2> border();
+  std::vector<SheetVertex> border();
+  std::vector<double> samples(const std::function<Vec3(double)>& curve, double t1) const;
+  std::vector<SheetVertex> smoothEdgeBorder(const Vec3& from);
 
   const Boundary3D& B;
   const std::vector<Generator3D>& G;
@@ -88,7 +90,6 @@ private:
   std::vector<int> Canal;    // the faces the end's circle lies on
   std::vector<Box3> CanalBoxes;
   std::vector<Box3> FaceBoxes; // every face's
-  Vec3List BorderPoints;     // the border loop's points (radius 0)
 };
 
 // The face (planar or curved, as asked) a boundary point lies on, nearest first; −1 if none.
@@ -205,9 +206,123 @@ bool CapSheetBuilder::solve(const Vec2& w, double guess, const CanalFoot* seed, 
   return std::isfinite(r) && foot.face >= 0;
 }
 
-// The cap's border loop in its plane coordinates: the sides of its faces that are convex
-// edges with the canal face, sampled within the tolerance and chained end to end.
-std::vector<Vec2> CapSheetBuilder::border()
+// Parameters along `curve` from 0 to t1 (both included) whose chords are within a quarter
+// of the tolerance and no longer than maxEdge.
+std::vector<double> CapSheetBuilder::samples(const std::function<Vec3(double)>& curve, double t1) const
+{
+  const double chord = 0.25 * Options.tolerance * Size, longest = Options.maxEdge * Size;
+  std::vector<double> out{ 0.0 };
+  std::function<void(double, double, int)> split = [&](double t0, double t2, int depth) {
+    const Vec3 a = curve(t0), b = curve(t2), m = curve(0.5 * (t0 + t2));
+    const Vec3 e = b - a;
+    const double u = std::clamp((m - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
+    if (depth < 16 && ((a + u * e - m).norm() > chord || e.norm() > longest || depth < 2))
+    {
+      split(t0, 0.5 * (t0 + t2), depth + 1);
+      split(0.5 * (t0 + t2), t2, depth + 1);
+    }
+    else
+      out.push_back(t2);
+  };
+  split(0.0, t1, 0);
+  return out;
+}
+
+// The border beside a fillet: where the cap's convex edges with the canal face end at
+// `from`, the canal face goes on tangentially as another face (a fillet's arc ends where
+// the fillet meets the faces it rounds), and the sheet goes on as that face's sheet with
+// the cap. Its border there is the curve of balls touching the cap and that smooth edge:
+// at the edge's point e with the canal's normal n (the ball side), the ball touching the
+// cap plane (point p, normal m into the solid) has r = (e − p)·m / (1 − n·m) — from 0 at
+// `from` up to the apex, where e is on the end's circle of contact (bisected on the edge).
+// The border vertices from `from` (excluded) to the apex (included), the apex's ball the
+// end's.
+std::vector<SheetVertex> CapSheetBuilder::smoothEdgeBorder(const Vec3& from)
+{
+  const double join = 1e-7 * Size;
+  const Touch3D plane = G[Cap].evaluate(G[Cap].parameterOf(End.capTouch));
+  for (const Edge3D& edge : B.edges())
+  {
+    if (edge.kind != VertexKind::Smooth)
+      continue;
+    const bool aCanal = std::count(Canal.begin(), Canal.end(), edge.faceA) > 0;
+    const bool bCanal = std::count(Canal.begin(), Canal.end(), edge.faceB) > 0;
+    if (aCanal == bCanal)
+      continue;
+    const int canal = aCanal ? edge.faceA : edge.faceB;
+    const BezierCurve side = B.faces()[edge.faceA].patch.side(edge.sideA);
+    const bool forward = (side.startPoint() - from).norm() <= join;
+    if (!forward && (side.endPoint() - from).norm() > join)
+      continue;
+    // The ball over the edge's point at t (0 at `from`): centre, radius, the point.
+    struct EdgeBall
+    {
+      Vec3 x, e;
+      double r;
+    };
+    auto at = [&](double t) {
+      EdgeBall b;
+      b.e = side.evaluate(forward ? t : 1.0 - t);
+      const Vec3 n = G[canal].evaluate(G[canal].parameterOf(b.e)).normal;
+      const double across = 1.0 - n.dot(plane.normal);
+      b.r = across > 1e-12 ? (b.e - plane.point).dot(plane.normal) / across : INFINITY;
+      b.x = b.e + b.r * n;
+      return b;
+    };
+    if (!(at(1.0).r >= End.radius))
+      fail("3D MAT sheets: ", where(), ": the smooth edge of ", G[canal].name(), " from ", format(B.userPoint(from)),
+        " ends before its balls reach the centre curve's end");
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < 60; ++it)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (at(mid).r < End.radius ? lo : hi) = mid;
+    }
+    const double top = 0.5 * (lo + hi);
+    if ((at(top).x - End.centre).norm() > 1e-6 * Size)
+      fail("3D MAT sheets: ", where(), ": the balls along the smooth edge of ", G[canal].name(), " from ",
+        format(B.userPoint(from)), " reach radius ", End.radius, " at ", format(B.userPoint(at(top).x)),
+        ", not at the centre curve's end");
+    // (Sampled by the balls' centres: the border's shape in the sheet.)
+    const std::vector<double> ts = samples([&](double t) { return at(t).x; }, top);
+    std::vector<SheetVertex> out;
+    for (size_t k = 1; k + 1 < ts.size(); ++k)
+    {
+      const EdgeBall b = at(ts[k]);
+      if (!emptyBall(b.x, b.r * (1.0 - 1e-7) - 1e-12 * Size))
+        fail("3D MAT sheets: ", where(), ": its ball at ", format(B.userPoint(b.x)),
+          " beside the smooth edge of ", G[canal].name(), " reaches another face (not supported yet)");
+      SheetVertex v;
+      v.x = b.x;
+      v.r = b.r;
+      const Vec3 capFoot = b.x - b.r * plane.normal;
+      v.touch = { { capFoot, b.e } };
+      v.q = { { G[Cap].parameterOf(capFoot), G[canal].parameterOf(b.e) } };
+      v.domain = v.q[0];
+      v.border = true;
+      out.push_back(v);
+    }
+    SheetVertex apex;
+    apex.x = End.centre;
+    apex.r = End.radius;
+    apex.touch = { { End.capTouch, End.circleTouch } };
+    apex.q = { { G[Cap].parameterOf(End.capTouch), Vec2::Zero() } };
+    apex.domain = apex.q[0];
+    apex.source = End.id;
+    apex.border = true; // (where the sheet meets the centre curve: its ball touches a circle)
+    out.push_back(apex);
+    return out;
+  }
+  fail("3D MAT sheets: ", where(), ": its cap's convex edges with the canal face end at ", format(B.userPoint(from)),
+    ", where the canal face meets no other face smoothly: the sheet reaches more than the canal face there (not "
+    "supported yet)");
+}
+
+// The cap's border loop: the sides of its faces that are convex edges with the canal face
+// (radius 0), sampled within the tolerance and chained end to end — a closed loop around
+// the apex (a shaft's flat end), or an open chain whose ends are closed through the apex
+// along the smooth edges where the canal face ends (a fillet's: smoothEdgeBorder).
+std::vector<SheetVertex> CapSheetBuilder::border()
 {
   std::map<std::pair<int, int>, int> edgeAt; // (face, side) → edge
   for (int e = 0; e < static_cast<int>(B.edges().size()); ++e)
@@ -215,7 +330,6 @@ std::vector<Vec2> CapSheetBuilder::border()
     edgeAt[{ B.edges()[e].faceA, B.edges()[e].sideA }] = e;
     edgeAt[{ B.edges()[e].faceB, B.edges()[e].sideB }] = e;
   }
-  const double chord = 0.25 * Options.tolerance * Size, longest = Options.maxEdge * Size;
   std::vector<Vec3List> pieces;
   for (int f : CapSide)
     for (int s = 0; s < 4; ++s)
@@ -229,62 +343,70 @@ std::vector<Vec2> CapSheetBuilder::border()
         fail("3D MAT sheets: ", where(), ": side ", s, " of ", G[f].name(), " has no neighbour");
       const Edge3D& edge = B.edges()[it->second];
       const int other = edge.faceA == f ? edge.faceB : edge.faceA;
-      if (edge.kind == VertexKind::Smooth && std::count(CapSide.begin(), CapSide.end(), other))
-        continue;
+      // (The cap's other sides are beyond the sheet: a fillet's cap is the whole face.)
       if (edge.kind != VertexKind::Convex || !std::count(Canal.begin(), Canal.end(), other))
-        fail("3D MAT sheets: ", where(), ": ", G[f].name(), " meets ", G[other].name(), " at a ",
-          edge.kind == VertexKind::Reflex ? "reflex" : edge.kind == VertexKind::Convex ? "convex" : "smooth",
-          " edge: the sheet reaches more than the canal face there (not supported yet)");
-      // Adaptive samples: chords within a quarter of the tolerance, no longer than maxEdge.
-      Vec3List points{ side.startPoint() };
-      std::function<void(double, double, int)> split = [&](double t0, double t1, int depth) {
-        const Vec3 a = side.evaluate(t0), b = side.evaluate(t1), m = side.evaluate(0.5 * (t0 + t1));
-        const Vec3 e = b - a;
-        const double u = std::clamp((m - a).dot(e) / std::max(e.squaredNorm(), 1e-300), 0.0, 1.0);
-        if (depth < 16 && ((a + u * e - m).norm() > chord || e.norm() > longest || depth < 2))
-        {
-          split(t0, 0.5 * (t0 + t1), depth + 1);
-          split(0.5 * (t0 + t1), t1, depth + 1);
-        }
-        else
-          points.push_back(b);
-      };
-      split(0.0, 1.0, 0);
+        continue;
+      Vec3List points;
+      for (double t : samples([&side](double t) { return side.evaluate(t); }, 1.0))
+        points.push_back(side.evaluate(t));
       pieces.push_back(std::move(points));
     }
   if (pieces.empty())
-    fail("3D MAT sheets: ", where(), ": the cap has no convex edge");
+    fail("3D MAT sheets: ", where(), ": the cap has no convex edge with the canal face");
   // Chained: each piece's end is the next one's start (either way round).
-  Vec3List loop = pieces.front();
+  Vec3List chain = pieces.front();
   std::vector<bool> used(pieces.size(), false);
   used[0] = true;
   const double join = 1e-7 * Size;
   for (size_t n = 1; n < pieces.size(); ++n)
   {
     bool found = false;
-    for (size_t k = 0; k < pieces.size() && !found; ++k)
+    for (int end = 0; end < 2 && !found; ++end)
     {
-      if (used[k])
-        continue;
-      Vec3List piece = pieces[k];
-      if ((piece.back() - loop.back()).norm() <= join)
-        std::reverse(piece.begin(), piece.end());
-      if ((piece.front() - loop.back()).norm() > join)
-        continue;
-      loop.insert(loop.end(), piece.begin() + 1, piece.end());
-      used[k] = found = true;
+      for (size_t k = 0; k < pieces.size() && !found; ++k)
+      {
+        if (used[k])
+          continue;
+        Vec3List piece = pieces[k];
+        if ((piece.back() - chain.back()).norm() <= join)
+          std::reverse(piece.begin(), piece.end());
+        if ((piece.front() - chain.back()).norm() > join)
+          continue;
+        chain.insert(chain.end(), piece.begin() + 1, piece.end());
+        used[k] = found = true;
+      }
+      if (!found)
+        std::reverse(chain.begin(), chain.end()); // (then try the chain's other end)
     }
     if (!found)
-      fail("3D MAT sheets: ", where(), ": the cap's convex edges do not form one loop (a cap with holes is not supported)");
+      fail("3D MAT sheets: ", where(), ": the cap's convex edges with the canal face do not form one chain (a cap "
+        "with holes is not supported)");
   }
-  if ((loop.back() - loop.front()).norm() > join)
-    fail("3D MAT sheets: ", where(), ": the cap's convex edges do not close");
-  loop.pop_back();
-  std::vector<Vec2> out;
-  for (const Vec3& p : loop)
-    out.push_back(G[Cap].parameterOf(p));
-  BorderPoints = loop;
-  return out;
+  std::vector<SheetVertex> loop;
+  const bool closed = (chain.back() - chain.front()).norm() <= join;
+  if (closed)
+    chain.pop_back();
+  for (const Vec3& p : chain)
+  {
+    SheetVertex v;
+    v.x = p;
+    v.r = 0.0;
+    v.touch = { { p, p } };
+    v.q = { { G[Cap].parameterOf(p), Vec2::Zero() } };
+    v.domain = v.q[0];
+    v.border = v.convexEdge = true;
+    loop.push_back(v);
+  }
+  if (closed)
+    return loop;
+  // Open: on from its end up to the apex, and down from the apex to its start.
+  std::vector<SheetVertex> up = smoothEdgeBorder(chain.back());
+  std::vector<SheetVertex> down = smoothEdgeBorder(chain.front());
+  down.pop_back(); // (the apex, once)
+  std::reverse(down.begin(), down.end());
+  loop.insert(loop.end(), up.begin(), up.end());
+  loop.insert(loop.end(), down.begin(), down.end());
+  return loop;
 }
 
 MedialSheetMesh CapSheetBuilder::run()
@@ -307,35 +429,33 @@ MedialSheetMesh CapSheetBuilder::run()
   Canal.assign(canal.begin(), canal.end());
   for (int f : Canal)
     CanalBoxes.push_back(B.faces()[f].patch.boundingBox());
-  const std::vector<Vec2> loop = border();
+  const std::vector<SheetVertex> loop = border();
+  std::vector<Vec2> domainLoop;
+  for (const SheetVertex& v : loop)
+    domainLoop.push_back(v.domain);
   std::unique_ptr<DomainTriangulation> domain;
   try
   {
-    domain = std::make_unique<DomainTriangulation>(std::vector<std::vector<Vec2>>{ loop });
+    domain = std::make_unique<DomainTriangulation>(std::vector<std::vector<Vec2>>{ domainLoop });
   }
   catch (const InputError& e)
   {
     fail("3D MAT sheets: ", where(), ": the cap's border cannot be triangulated (", e.what(), ")");
   }
   MedialSheetMesh mesh;
-  for (size_t k = 0; k < loop.size(); ++k)
-  {
-    SheetVertex v;
-    v.x = BorderPoints[k];
-    v.r = 0.0;
-    v.touch = { { BorderPoints[k], BorderPoints[k] } };
-    v.q = { { loop[k], Vec2::Zero() } };
-    v.domain = loop[k];
-    v.border = v.convexEdge = true;
-    mesh.vertices.push_back(v);
-  }
+  mesh.vertices = loop;
   mesh.loops = 1;
   mesh.loopSizes = { static_cast<int>(loop.size()) };
-  // The apex: the centre curve's end, a vertex of the sheet.
-  const Vec2 apex = G[Cap].parameterOf(End.capTouch);
-  if (domain->insert(apex) != static_cast<int>(mesh.vertices.size()))
-    fail("3D MAT sheets: ", where(), ": its apex is not inside the cap's border");
+  // The apex: the centre curve's end, a vertex of the sheet — on its border beside a
+  // fillet, else inside the loop of convex edges.
+  for (size_t k = 0; k < loop.size(); ++k)
+    if (loop[k].source == End.id)
+      mesh.apex = static_cast<int>(k);
+  if (mesh.apex < 0)
   {
+    const Vec2 apex = G[Cap].parameterOf(End.capTouch);
+    if (domain->insert(apex) != static_cast<int>(mesh.vertices.size()))
+      fail("3D MAT sheets: ", where(), ": its apex is not inside the cap's border");
     SheetVertex v;
     v.x = End.centre;
     v.r = End.radius;
@@ -412,38 +532,96 @@ Vec3List distinctTouches(const Vec3List& touches, double radius)
 }
 } // namespace
 
-std::vector<CapEnd> capEnds(const MAT3D& mat)
+namespace
+{
+// The cap end of a centre curve whose end ball (centre x, radius r) touches `touches`, the
+// circle of contact's first, the curve running along `along` there: the touches off the
+// circle — off the plane across the curve through its first touch; a fillet's spine end
+// touches the faces beside the fillet too, at the ends of its arc — must be one point, on a
+// planar face (the cap). Faces the ball's record leaves out (a complex read back keeps
+// three touches) are asked: every planar face at the ball's radius.
+// The direction of a polyline at its start, from the first of `points` away from it (an end
+// may be recorded twice).
+Vec3 directionAtStart(const Vec3List& points)
+{
+  for (size_t k = 1; k < points.size(); ++k)
+    if (const Vec3 d = points[k] - points[0]; d.norm() > 1e-12 * std::max(1.0, points[0].norm()))
+      return d;
+  return Vec3::Zero();
+}
+
+std::optional<CapEnd> capEndOf(const Boundary3D& boundary, const std::vector<Generator3D>& generators,
+  const Vec3& x, double r, const Vec3& along, Vec3List touches, int id)
+{
+  const Vec3 axis = along.normalized();
+  if (touches.empty() || !(axis.norm() > 0.5) || !(r > 0.0))
+    return std::nullopt;
+  const double size = boundary.diagonal();
+  for (int f = 0; f < static_cast<int>(boundary.faces().size()); ++f)
+    if (generators[f].planar())
+      if (const Vec3 p = generators[f].nearestPoint(x); std::abs((p - x).norm() - r) <= 1e-6 * r)
+        touches.push_back(p);
+  const double level = (touches.front() - x).dot(axis);
+  Vec3List off;
+  for (const Vec3& t : touches)
+    if (std::abs((t - x).dot(axis) - level) > 1e-6 * r)
+      off.push_back(t);
+  off = distinctTouches(off, r);
+  if (off.size() != 1 ||
+    std::none_of(generators.begin(), generators.begin() + static_cast<long>(boundary.faces().size()),
+      [&](const Generator3D& g) { return g.planar() && g.distance(off.front()) <= 1e-7 * size; }))
+    return std::nullopt;
+  return CapEnd{ x, r, touches.front(), off.front(), id };
+}
+} // namespace
+
+std::vector<CapEnd> capEnds(const MAT3D& mat, const Boundary3D& boundary, const std::vector<Generator3D>& generators)
 {
   std::vector<CapEnd> out;
   for (const MAT3DCentreCurve& curve : mat.centreCurves)
-    for (int n : { curve.startNode, curve.endNode })
+  {
+    const size_t n = curve.balls.size();
+    if (n < 2)
+      continue;
+    for (int end = 0; end < 2; ++end)
     {
-      const MAT3DNode& node = mat.nodes[n];
-      const Vec3List touches = distinctTouches(node.ball.touches, node.ball.r);
-      if (!node.circleEnd || node.loopPoint || touches.size() != 2)
+      const int node = end == 0 ? curve.startNode : curve.endNode;
+      const MAT3DNode& at = mat.nodes[node];
+      if (!at.circleEnd || at.loopPoint ||
+        std::any_of(out.begin(), out.end(), [node](const CapEnd& e) { return e.id == node; }))
         continue;
-      if (std::any_of(out.begin(), out.end(), [n](const CapEnd& e) { return e.id == n; }))
-        continue;
-      out.push_back({ node.ball.x, node.ball.r, touches[0], touches[1], n });
+      Vec3List centres;
+      for (size_t k = 0; k < n; ++k)
+        centres.push_back(curve.balls[end == 0 ? k : n - 1 - k].x);
+      const Vec3 along = directionAtStart(centres);
+      if (const auto cap = capEndOf(boundary, generators, at.ball.x, at.ball.r, along, at.ball.touches, node))
+        out.push_back(*cap);
     }
+  }
   return out;
 }
 
-std::vector<CapEnd> capEnds(const MedialComplex& mat)
+std::vector<CapEnd> capEnds(const MedialComplex& mat, const Boundary3D& boundary, const std::vector<Generator3D>& generators)
 {
   std::vector<CapEnd> out;
   for (const MedialElement& e : mat.elements)
   {
-    if (e.type != MedialElementType::CentreCurve || e.points.size() < 2 || e.points.front() == e.points.back())
+    const size_t n = e.points.size();
+    if (e.type != MedialElementType::CentreCurve || n < 2 || e.points.front() == e.points.back())
       continue;
-    for (int id : { e.points.front(), e.points.back() })
+    for (int end = 0; end < 2; ++end)
     {
+      const int id = end == 0 ? e.points.front() : e.points.back();
       const MedialPoint3D& p = mat.points[id];
-      const Vec3List touches = distinctTouches(p.touches, p.radius);
-      if (p.type != MedialPoint3DType::CircleCentre || touches.size() != 2 ||
+      if (p.type != MedialPoint3DType::CircleCentre ||
         std::any_of(out.begin(), out.end(), [id](const CapEnd& c) { return c.id == id; }))
         continue;
-      out.push_back({ p.x, p.radius, touches[0], touches[1], id });
+      Vec3List centres;
+      for (size_t k = 0; k < n; ++k)
+        centres.push_back(mat.points[e.points[end == 0 ? k : n - 1 - k]].x);
+      const Vec3 along = directionAtStart(centres);
+      if (const auto cap = capEndOf(boundary, generators, p.x, p.radius, along, p.touches, id))
+        out.push_back(*cap);
     }
   }
   return out;

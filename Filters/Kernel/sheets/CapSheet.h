@@ -28,11 +28,15 @@ struct CapEnd
   int id = -1;                     ///< the caller's number of the end's point (kept on the apex vertex)
 };
 
-/// The ends of the MAT's centre curves that touch a second entity (node ids as `id`).
-std::vector<CapEnd> capEnds(const MAT3D& mat);
+/// The ends of the MAT's centre curves whose ball touches one planar face off its circle of
+/// contact (node ids as `id`): a shaft's flat end, or a fillet's spine where it meets the
+/// face across the fillet's end (its ball touches the faces the fillet rounds too, at the
+/// ends of its arc). The planar faces are asked for the touch the end's record lacks.
+std::vector<CapEnd> capEnds(const MAT3D& mat, const Boundary3D& boundary, const std::vector<Generator3D>& generators);
 /// The same for a MAT read back as a complex: CircleCentre points ending a CentreCurve
-/// element with two touches (the complex's point ids).
-std::vector<CapEnd> capEnds(const MedialComplex& mat);
+/// element (the complex's point ids).
+std::vector<CapEnd> capEnds(const MedialComplex& mat, const Boundary3D& boundary,
+  const std::vector<Generator3D>& generators);
 
 /// The cone sheet at `end`. Throws InputError naming the cap when the end's second touch is
 /// not on a planar face, a side of the cap is not a convex edge with the canal face, or a

@@ -1790,7 +1790,7 @@ std::vector<MedialSheetMesh> interpolateSheets(const Boundary3D& boundary, const
   // edges are parts of it).
   std::vector<MedialSheetMesh> caps;
   std::vector<std::string> capErrors;
-  for (const CapEnd& end : capEnds(mat))
+  for (const CapEnd& end : capEnds(mat, boundary, generators))
   {
     capErrors.emplace_back();
     try
