@@ -716,10 +716,19 @@ TEST(vtkCADBoundaryReader, FilletedEdgesAreComplete)
     return fillet.Shape();
   };
   const TopoDS_Shape wedge = BRepPrimAPI_MakeWedge(3, 2, 1, 1).Shape();
-  const std::vector<Case> cases{ { "one-edge", filleted(box, { { 0.3, edges[0] } }), 1 },
+  std::vector<Case> cases{ { "one-edge", filleted(box, { { 0.3, edges[0] } }), 1 },
     { "edge-4-by-0.8", filleted(box, { { 0.8, edges[4] } }), 1 },
     { "two-edges", filleted(box, { { 0.3, edges[0] }, { 0.5, edges[2] } }), 2 },
     { "wedge", filleted(wedge, { { 0.2, TopoDS::Edge(TopExp_Explorer(wedge, TopAbs_EDGE).Current()) } }), 1 } };
+  // Every edge rounded (spheres blend the corners): no convex vertex left, and the MAT is
+  // the inner box's (3.4 x 1.4 x 2.4) with every radius 0.3 larger — its seams start at the
+  // blends' centres, where three spines (centre curves) meet; until 2026-11-29 nothing
+  // started them (no seam, every sheet failed), and the closest point of a blend's octant
+  // from its centre searched 200,000 boxes (1.4 s each).
+  std::vector<std::pair<double, TopoDS_Edge>> everyEdge;
+  for (const TopoDS_Edge& e : edges)
+    everyEdge.push_back({ 0.3, e });
+  cases.push_back({ "every-edge", filleted(box, everyEdge), 12 });
   for (const Case& c : cases)
   {
     SCOPED_TRACE(c.name);
@@ -745,6 +754,26 @@ TEST(vtkCADBoundaryReader, FilletedEdgesAreComplete)
     EXPECT_TRUE(sheets->GetVerificationPassed());
     EXPECT_EQ(sheets->GetNumberOfFailedSheets(), 0);
     EXPECT_LE(sheets->GetMaximumCoverageShortfall(), 1e-3);
+    if (c.name == "every-edge")
+    {
+      // The inner box's junctions: (±(1.7 − 0.7), 0, ±(1.2 − 0.7)) about its centre
+      // (2, 1, 1.5), radius 0.7 + 0.3 = 1.
+      vtkPolyData* out = mat->GetOutput();
+      vtkDataArray* type = out->GetCellData()->GetArray(arrays::ElementType);
+      int junctions = 0;
+      for (vtkIdType cell = 0; cell < out->GetNumberOfCells(); ++cell)
+        if (static_cast<int>(type->GetTuple1(cell)) == static_cast<int>(MedialElementType::Junction))
+        {
+          double x[3];
+          out->GetPoint(out->GetCell(cell)->GetPointId(0), x);
+          EXPECT_NEAR(std::abs(x[0] - 2.0), 1.0, 1e-9);
+          EXPECT_NEAR(x[1], 1.0, 1e-9);
+          EXPECT_NEAR(std::abs(x[2] - 1.5), 0.5, 1e-9);
+          EXPECT_NEAR(out->GetPointData()->GetArray(arrays::Radius)->GetTuple1(out->GetCell(cell)->GetPointId(0)), 1.0, 1e-9);
+          ++junctions;
+        }
+      EXPECT_EQ(junctions, 4);
+    }
     if (c.name != "one-edge")
       continue;
     // The spine in closed form: x = y = 0.3, r = 0.3, from z = 0.3 to 2.7 — where a ball

@@ -1249,7 +1249,11 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
   PatchSearch search(patch, query, maxDistance, pp.zeroU, pp.zeroV,
     boxBudget ? std::max(1, std::min(*boxBudget, BoxLimit)) : BoxLimit);
   const bool flatU = pp.gu.maxAbs() <= pp.zeroU, flatV = pp.gv.maxAbs() <= pp.zeroV;
-  if (flatU && flatV)
+  // (Every point stationary to 1e-10 of the patch's scale: the query is within about that
+  // of the centre of a sphere the patch lies on — a blend's centre found by bisection, not
+  // to rounding — and every point is its foot to as much; searching would follow the
+  // rounding over the whole patch, 200,000 boxes.)
+  if ((flatU && flatV) || (pp.gu.maxAbs() <= 1e3 * pp.zeroU && pp.gv.maxAbs() <= 1e3 * pp.zeroV))
   {
     search.add(0.5, 0.5); // the query is a centre of the whole patch (a sphere's centre)
     for (PatchFootpoint& f : search.found)

@@ -1768,7 +1768,7 @@ void Tracer::collectSheets()
 
 void Tracer::reportProgress()
 {
-  if (!Options.progress)
+  if (!Options.progress || Result.seams.empty()) // (a trace may add no seam)
     return;
   Reached.resize(B.faces().size(), false);
   for (const MedialBall3D& ball : Result.seams.back().balls)
@@ -1791,6 +1791,7 @@ void Tracer::startFrom(int node)
   const MedialBall3D& nb = Result.nodes[node].ball;
   const std::vector<int> faces = nb.generators;
   const int k = static_cast<int>(faces.size());
+
   // At a junction a seam's three touches are distinct points: generators touching at one
   // point (coplanar pieces, a wall and the reflex edge at its foot) are never in one
   // triplet. (At a vertex every generator touches the vertex.)
@@ -2226,17 +2227,32 @@ void Tracer::addCentreCurves()
       node.ball.x = c.x;
       node.ball.r = c.r;
       node.circleEnd = true;
-      if (blocked)
+      // The other entities at the ball's surface (within 1e-6 of its radius: the end is
+      // bisected to 1e-13 of the size, the faces' closest points are exact) — the faces
+      // its circle lies on too, where they touch it off the circle.
+      MedialBall3D touching = node.ball;
+      int planar = 0;
+      for (int f : Tree.candidatesWithin(c.x, c.r * (1.0 + 1e-6)))
+        if (f != c.face && (blocked ? !faces.count(f) : true) && Generators[f].distance(c.x) <= c.r * (1.0 + 1e-6))
+        {
+          touching.generators.push_back(f);
+          touching.q.push_back(Generators[f].parameterOf(Generators[f].nearestPoint(c.x)));
+          planar += Generators[f].planar() ? 1 : 0;
+        }
+      // (An end touching three planar faces may start seams: a rounded box has no convex
+      // vertex; its seams start where the spines of its fillets meet, at the centres of the
+      // spheres that blend its corners, touching the faces the blends join at the corners
+      // of their octants. Elsewhere an end that stopped where its face does touches only
+      // its circle.)
+      // Such an end is one node with the other curves ending there (a corner's three).
+      if (planar >= 3)
       {
-        // The other entities at the ball's surface (within 1e-6 of its radius: the end is
-        // bisected to 1e-13 of the size, the faces' closest points are exact).
-        for (int f : Tree.candidatesWithin(c.x, c.r * (1.0 + 1e-6)))
-          if (!faces.count(f) && Generators[f].distance(c.x) <= c.r * (1.0 + 1e-6))
-          {
-            node.ball.generators.push_back(f);
-            node.ball.q.push_back(Generators[f].parameterOf(Generators[f].nearestPoint(c.x)));
-          }
+        const int at = addNode(touching, -1);
+        Result.nodes[at].circleEnd = true;
+        return at;
       }
+      if (blocked)
+        node.ball = touching;
       Result.nodes.push_back(node);
       return static_cast<int>(Result.nodes.size()) - 1;
     };

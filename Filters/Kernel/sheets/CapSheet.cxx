@@ -567,9 +567,14 @@ std::optional<CapEnd> capEndOf(const Boundary3D& boundary, const std::vector<Gen
     if (std::abs((t - x).dot(axis) - level) > 1e-6 * r)
       off.push_back(t);
   off = distinctTouches(off, r);
+  // (Inside the cap, off every curved face: at a rounded box's corner the ball touches
+  // the faces the blend joins at the corners of the blend's octant, which is no cap.)
+  const auto faces = generators.begin() + static_cast<long>(boundary.faces().size());
   if (off.size() != 1 ||
-    std::none_of(generators.begin(), generators.begin() + static_cast<long>(boundary.faces().size()),
-      [&](const Generator3D& g) { return g.planar() && g.distance(off.front()) <= 1e-7 * size; }))
+    std::none_of(generators.begin(), faces,
+      [&](const Generator3D& g) { return g.planar() && g.distance(off.front()) <= 1e-7 * size; }) ||
+    std::any_of(generators.begin(), faces,
+      [&](const Generator3D& g) { return !g.planar() && g.distance(off.front()) <= 1e-7 * size; }))
     return std::nullopt;
   return CapEnd{ x, r, touches.front(), off.front(), id };
 }

@@ -6,6 +6,7 @@
 #include "sheets/SheetCoverage.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 namespace exactmat
@@ -31,17 +32,49 @@ std::vector<CentreCurveTouches> centreCurveTouches(const MAT3D& mat)
 std::vector<CentreCurveTouches> centreCurveTouches(const MedialComplex& mat)
 {
   std::vector<CentreCurveTouches> out;
+  std::map<int, int> ends; // point → the centre curves ending there
+  for (const MedialElement& e : mat.elements)
+    if (e.type == MedialElementType::CentreCurve && !e.points.empty() && e.points.front() != e.points.back())
+    {
+      ++ends[e.points.front()];
+      ++ends[e.points.back()];
+    }
   for (const MedialElement& e : mat.elements)
   {
     if (e.type != MedialElementType::CentreCurve)
       continue;
-    CentreCurveTouches c;
+    // Each point's touch on this curve's circle: its first, but where curves share an end
+    // (a rounded box's three spines meet at the centre of its corner's blend) the end's
+    // first touch is on one of them only — there the touch nearest to the neighbour's,
+    // moved with the centre (circles of contact along a spine are translates), or, when
+    // the end does not record one near it, that moved touch itself.
+    std::vector<int> ids;
     for (int id : e.points)
       if (!mat.points[id].touches.empty())
+        ids.push_back(id);
+    CentreCurveTouches c;
+    for (size_t k = 0; k < ids.size(); ++k)
+    {
+      const MedialPoint3D& p = mat.points[ids[k]];
+      Vec3 touch = p.touches.front();
+      if (ids.size() >= 2 && (k == 0 || k + 1 == ids.size()) && ends[ids[k]] > 1)
       {
-        c.centres.push_back(mat.points[id].x);
-        c.touches.push_back(mat.points[id].touches.front());
+        const MedialPoint3D& n = mat.points[ids[k == 0 ? 1 : k - 1]];
+        const Vec3 neighbour = k == 0 || c.touches.empty() ? n.touches.front() : c.touches.back();
+        const Vec3 moved = neighbour + (p.x - n.x);
+        double nearest = INFINITY;
+        for (const Vec3& t : p.touches)
+          if ((t - moved).norm() < nearest)
+          {
+            nearest = (t - moved).norm();
+            touch = t;
+          }
+        if (!(nearest <= 1e-6 * p.radius))
+          touch = moved;
       }
+      c.centres.push_back(p.x);
+      c.touches.push_back(touch);
+    }
     out.push_back(std::move(c));
   }
   return out;
