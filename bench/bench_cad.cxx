@@ -28,6 +28,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -337,6 +338,24 @@ int matTable()
     for (const TopoDS_Edge& e : edges)
       all.Add(0.3, e);
     matRow("box, every edge filleted", all.Shape());
+  }
+  {
+    // (The L prism's reflex edge rounded: a concave fillet, as a bracket's inner corner is.)
+    BRepBuilderAPI_MakePolygon l;
+    for (const auto& p : { gp_Pnt(0, 0, 0), gp_Pnt(3, 0, 0), gp_Pnt(3, 1, 0), gp_Pnt(1, 1, 0), gp_Pnt(1, 2.5, 0),
+           gp_Pnt(0, 2.5, 0) })
+      l.Add(p);
+    l.Close();
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(l.Wire()).Face(), gp_Vec(0, 0, 2)).Shape();
+    BRepFilletAPI_MakeFillet inner(prism);
+    for (TopExp_Explorer ex(prism, TopAbs_EDGE); ex.More(); ex.Next())
+    {
+      BRepAdaptor_Curve c(TopoDS::Edge(ex.Current()));
+      const gp_Pnt m = c.Value(0.5 * (c.FirstParameter() + c.LastParameter()));
+      if (std::abs(m.X() - 1) < 1e-9 && std::abs(m.Y() - 1) < 1e-9)
+        inner.Add(0.4, TopoDS::Edge(ex.Current()));
+    }
+    matRow("L prism, inner edge filleted", inner.Shape());
   }
   {
     // (A fillet between faces that are not perpendicular: the wedge's sloping edge.)
