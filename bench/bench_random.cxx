@@ -8,11 +8,13 @@
 //
 //   exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v]
 //   exactmat_bench_random --star-scaling   (random stars of 1,000 … 30,000 edges, 3 seeds each)
+//   exactmat_bench_random --clusters       (near-regular polygons: jittered, and moved far)
 #include "brep/NormalisePieces.h"
 #include "common/InputError.h"
 #include "mat2d/Tracer.h"
 #include "mat2d/Verification.h"
 #include "shapes/Catalogue.h"
+#include "shapes/Primitives.h"
 #include "shapes/RandomShapes.h"
 
 #include <chrono>
@@ -21,7 +23,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <random>
 #include <string>
+#include <vector>
 
 using namespace exactmat;
 
@@ -86,6 +90,125 @@ int starScaling()
   }
   return 0;
 }
+// What went wrong, printed after the tables.
+std::vector<std::string> Failures;
+
+// One polygon through the MAT and its verification: 'v' verified, 'r' refused, 'f' flagged
+// (the reason kept in Failures under `name`).
+char verifiedPolygon(const std::string& name, const Vec3List& corners, const ShapeMotion& motion, double& seconds)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  char result = 'f';
+  try
+  {
+    const Boundary2D b = buildNormalised(curvePieces(motion.apply(makePolygon(corners))));
+    const Generators g(b);
+    const MedialGraph graph = computeMAT2D(g);
+    const MAT2DVerification v = verifyMAT2D(g, graph);
+    result = v.ok(1e-9) ? 'v' : 'f';
+    if (result == 'f')
+      Failures.push_back(name + ": flagged: " + v.problems(1e-9));
+  }
+  catch (const InputError& e)
+  {
+    result = 'r';
+    Failures.push_back(name + ": refused: " + e.what());
+  }
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+// Issue 9's near-regular polygons, whose centres split into clusters of branch points
+// closer than the disk tests resolve (mat2d/LineCluster): regular n-gons with every vertex
+// jittered by up to ε (3 seeds each), and regular n-gons and gears (every other pair of
+// vertices at 0.85 of the radius) turned by 0.3 rad and moved by up to 1e7 × their size,
+// where the input's rounding does the jittering. Each cell: verified / drawn (r refused,
+// f flagged by the verification), then the mean time per polygon.
+int clusterTable()
+{
+  const std::vector<int> sizes{ 100, 500, 1000, 2000, 4000, 7000 };
+  auto cell = [](int verified, int drawn, int refused, int flagged) {
+    std::printf(" %d / %d%s |", verified, drawn,
+      refused + flagged == 0 ? "" : (" (" + std::to_string(refused) + " r, " + std::to_string(flagged) + " f)").c_str());
+  };
+  const std::vector<double> jitters{ 0.0, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4 };
+  std::printf("Jittered regular n-gons (unit circumradius; 3 seeds per cell)\n\n| edges |");
+  for (double e : jitters)
+    std::printf(" jitter %.0e |", e);
+  std::printf(" ms per polygon |\n|---:|");
+  for (size_t k = 0; k <= jitters.size(); ++k)
+    std::printf("---:|");
+  std::printf("\n");
+  for (int n : sizes)
+  {
+    std::printf("| %d |", n);
+    double seconds = 0.0;
+    int runs = 0;
+    for (double jitter : jitters)
+    {
+      int verified = 0, refused = 0, flagged = 0;
+      const int seeds = jitter == 0.0 ? 1 : 3;
+      for (int seed = 1; seed <= seeds; ++seed)
+      {
+        RandomEngine rng(static_cast<unsigned long long>(1000 * n + seed));
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        Vec3List corners;
+        for (int i = 0; i < n; ++i)
+        {
+          const double dx = jitter * u(rng), dy = jitter * u(rng);
+          corners.push_back(Vec3(std::cos(2.0 * M_PI * i / n) + dx, std::sin(2.0 * M_PI * i / n) + dy, 0.0));
+        }
+        char name[96];
+        std::snprintf(name, sizeof name, "%d-gon jittered by %.0e (seed %d)", n, jitter, seed);
+        const char r = verifiedPolygon(name, corners, ShapeMotion(), seconds);
+        ++runs;
+        (r == 'v' ? verified : r == 'r' ? refused : flagged) += 1;
+      }
+      cell(verified, seeds, refused, flagged);
+    }
+    std::printf(" %.0f |\n", 1e3 * seconds / runs);
+    std::fflush(stdout);
+  }
+  const std::vector<double> offsets{ 0.0, 1e5, 1e6, 5e6, 1e7 };
+  for (const bool gear : { false, true })
+  {
+    std::printf("\n%s turned by 0.3 rad and moved by (d, -0.7 d), d = offset x the diameter\n\n| edges |",
+      gear ? "Gears (every other pair of vertices at 0.85)" : "Regular n-gons");
+    for (double o : offsets)
+      std::printf(" offset %.0e |", o);
+    std::printf(" ms per polygon |\n|---:|");
+    for (size_t k = 0; k <= offsets.size(); ++k)
+      std::printf("---:|");
+    std::printf("\n");
+    for (int n : { 100, 500, 1000, 2000 })
+    {
+      std::printf("| %d |", n);
+      Vec3List corners;
+      for (int i = 0; i < n; ++i)
+      {
+        const double rr = gear && (i / 2) % 2 ? 0.85 : 1.0;
+        corners.push_back(Vec3(rr * std::cos(2.0 * M_PI * i / n), rr * std::sin(2.0 * M_PI * i / n), 0.0));
+      }
+      double seconds = 0.0;
+      for (double offset : offsets)
+      {
+        ShapeMotion m;
+        m.angle = 0.3;
+        m.offset = Vec3(2.0 * offset, -1.4 * offset, 0.0);
+        char name[96];
+        std::snprintf(name, sizeof name, "%s of %d edges moved by %.0e", gear ? "gear" : "n-gon", n, offset);
+        const char r = verifiedPolygon(name, corners, m, seconds);
+        cell(r == 'v', 1, r == 'r', r == 'f');
+      }
+      std::printf(" %.0f |\n", 1e3 * seconds / offsets.size());
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\n");
+  for (const std::string& f : Failures)
+    std::printf("%s\n", f.substr(0, 300).c_str());
+  return 0;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -106,9 +229,11 @@ int main(int argc, char* argv[])
       verbose = true;
     else if (a == "--star-scaling")
       return starScaling();
+    else if (a == "--clusters")
+      return clusterTable();
     else
     {
-      std::fprintf(stderr, "usage: exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v] | --star-scaling\n");
+      std::fprintf(stderr, "usage: exactmat_bench_random [--count N] [--seed S] [--max-edges M] [-v] | --star-scaling | --clusters\n");
       return 2;
     }
   }

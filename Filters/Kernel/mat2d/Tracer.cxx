@@ -898,6 +898,16 @@ Tracer::ClusterPlan Tracer::planLineCluster(const Vec2& xb, double r, int ga, in
         std::swap(a0, b0);
         std::swap(a1, b1);
       }
+      // (A segment as short as the contraction of near-ties (TieMerge) runs up to that far
+      // off its bisector: both feet may then move the same way, by a hair — a 2,000-gon
+      // jittered by 1e-12 had a front step back 1.1e-9 of its edge over 3e-12, and the
+      // verification count the loop swept again. Fronts do not step back; a step back
+      // beyond the rounding of such segments stays, for the verification to report.)
+      constexpr double Hair = 1e-7;
+      if (a1.s < a0.s && a0.s - a1.s <= Hair)
+        a1.s = a0.s;
+      if (b1.s > b0.s && b1.s - b0.s <= Hair)
+        b1.s = b0.s;
       plan.segments.push_back({ planned[k], planned[other], a0, b0, a1, b1 });
       if (!known)
         stack.push_back(other);
