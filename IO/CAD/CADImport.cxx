@@ -1,4 +1,5 @@
 #include "CADImport.h"
+#include "CylinderSection.h"
 #include "PlanarTriangulation.h"
 
 #include "common/InputError.h"
@@ -660,6 +661,22 @@ private:
     {
       return t;
     }
+    std::string why;
+    CylinderSectionFace section = cylinderSectionFace(face, Tol, why);
+    if (!section.surface.IsNull())
+    {
+      std::vector<EdgeOnFace> edges;
+      for (const CylinderSectionEdge& ce : section.edges)
+      {
+        EdgeOnFace eo;
+        eo.edge = edgeIndex(ce.edge);
+        eo.isoV = ce.isoV;
+        eo.fixed = ce.fixed;
+        edges.push_back(eo);
+      }
+      adopt(t, section.surface, std::move(edges));
+      return t;
+    }
     int wires = 0;
     for (TopExp_Explorer ex(face, TopAbs_WIRE); ex.More(); ex.Next())
     {
@@ -694,7 +711,8 @@ private:
       return t;
     }
     fail(faceName(f), " is a trimmed ", surfaceTypeName(type), " (its edges are not the borders "
-      "of its parameter rectangle): trimmed curved faces are not supported yet");
+      "of its parameter rectangle", type == GeomAbs_Cylinder ? ", nor is it " + why : std::string(),
+      "): trimmed curved faces are not supported yet");
   }
 
   // A face whose edges all lie on the border of its parameter rectangle (seams and poles
@@ -837,6 +855,14 @@ private:
     {
       b->Segment(std::max(u0, firstU), std::min(u1, lastU), std::max(v0, firstV), std::min(v1, lastV));
     }
+    adopt(t, b, std::move(edges));
+    return true;
+  }
+
+  // The face as the B-spline patch b whose sides are the given edges (each along an
+  // iso-line of b at its fixed parameter): the patch, cut where the face's edges meet.
+  void adopt(FaceTiling& t, const Handle(Geom_BSplineSurface) & b, std::vector<EdgeOnFace> edges)
+  {
     t.kind = FaceTiling::Natural;
     t.surface = b;
     t.edges = std::move(edges);
@@ -880,7 +906,6 @@ private:
         }
       }
     }
-    return true;
   }
 
   // Takes the cuts on the face's edges as knots, and gives its knots to its edges as cuts.
