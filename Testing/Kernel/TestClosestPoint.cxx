@@ -400,3 +400,61 @@ TEST(ClosestPoint, PatchFindsEveryInteriorMinimum)
     }
   }
 }
+
+namespace
+{
+// The side of the cylinder x² + y² = 1 over the angles [a0, a1] between the sections
+// z = 0.3·x (below) and z = 3 + 0.2·y (above): a ruled patch of degree (2, 1) whose
+// circles are no iso-lines (a fillet cut at a miter).
+BezierPatch slantedCylinderPiece(double a0, double a1)
+{
+  const double w = std::cos(0.5 * (a1 - a0));
+  const Vec3 arc[3] = { Vec3(std::cos(a0), std::sin(a0), 0.0),
+    Vec3(std::cos(0.5 * (a0 + a1)), std::sin(0.5 * (a0 + a1)), 0.0) / w, Vec3(std::cos(a1), std::sin(a1), 0.0) };
+  const double weights[3] = { 1.0, w, 1.0 };
+  Vec4List net;
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3 low(arc[i].x(), arc[i].y(), 0.3 * arc[i].x()), high(arc[i].x(), arc[i].y(), 3.0 + 0.2 * arc[i].y());
+    for (const Vec3& p : { low, high })
+      net.push_back(Vec4(p.x(), p.y(), p.z(), 1.0) * weights[i]);
+  }
+  return BezierPatch(2, 1, std::move(net));
+}
+} // namespace
+
+// Near the axis of a cylinder cut off by slanted planes every point of the circle at the
+// query's height is nearly a foot and that circle crosses the parameters diagonally: the
+// general search ran out of boxes there (a query 1e-5 from the axis: no foot at all, the
+// patch's corner returned). The swept patch's search is closed form: R − ρ at the query's
+// angle and height.
+TEST(ClosestPoint, SlantedCylinderPieceNearItsAxis)
+{
+  const BezierPatch patch = slantedCylinderPiece(0.2, 0.2 + 2.0 * M_PI / 3.0);
+  for (const double rho : { 0.5, 1e-3, 1e-5, 1e-8, 1e-12, 0.0 })
+  {
+    SCOPED_TRACE(rho);
+    const double angle = 1.1, height = 1.4;
+    const Vec3 q(rho * std::cos(angle), rho * std::sin(angle), height);
+    const std::uint64_t cutShort = patchSearchesCutShort();
+    const PatchFootpoint f = closestPoint(patch, q);
+    EXPECT_EQ(patchSearchesCutShort(), cutShort);
+    EXPECT_NEAR(f.distance, 1.0 - rho, 1e-14);
+    EXPECT_NEAR(f.point.z(), height, 1e-14);
+    EXPECT_NEAR(std::hypot(f.point.x(), f.point.y()), 1.0, 1e-14);
+    if (rho >= 1e-8)
+      EXPECT_NEAR(std::atan2(f.point.y(), f.point.x()), angle, 1e-14 / rho);
+    EXPECT_LE((patch.evaluate(f.u, f.v) - f.point).norm(), 1e-14);
+    EXPECT_TRUE(patchComesWithin(patch, q, (1.0 - rho) * (1.0 + 1e-9)));
+    EXPECT_FALSE(patchComesWithin(patch, q, (1.0 - rho) * (1.0 - 1e-9)));
+  }
+  // Below the lower section (z = 0.3·x): the foot is on that side, as dense sampling says.
+  const Vec3 q(0.1, 0.6, -0.4);
+  double best = INFINITY;
+  for (int k = 0; k <= 200000; ++k)
+    best = std::min(best, (patch.evaluate(k / 200000.0, 0.0) - q).norm());
+  const PatchFootpoint f = closestPoint(patch, q);
+  EXPECT_NEAR(f.distance, best, 1e-9);
+  EXPECT_NEAR(f.v, 0.0, 1e-14);
+  EXPECT_TRUE(f.onBoundary);
+}

@@ -1,4 +1,5 @@
 #include "ClosestPoint.h"
+#include "SweptPatch.h"
 
 #include "nurbs/Bernstein.h"
 
@@ -1237,6 +1238,9 @@ struct PatchSearch
 
 namespace
 {
+std::vector<PatchFootpoint> withSideMinima(
+  const BezierPatch& patch, const Vec3& query, double maxDistance, std::vector<PatchFootpoint> result);
+
 std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3& query,
   double maxDistance, int* boxBudget = nullptr)
 {
@@ -1281,6 +1285,10 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
     }
     return result;
   }
+  // A swept patch (an extrusion's side, a cylinder between slanted sections): its interior
+  // minima from the profile's footpoints, a 1D search (SweptPatch.h).
+  if (const std::optional<SweptPatch> swept = sweptPatch(patch))
+    return withSideMinima(patch, query, maxDistance, sweptInteriorFootpoints(*swept, query, maxDistance));
   BernsteinPoly2 gu = pp.gu, gv = pp.gv;
   // (The control points of a side all one point: a pole. Sides 0 … 3 are v = 0, u = 1,
   // v = 1, u = 0.)
@@ -1317,8 +1325,14 @@ std::vector<PatchFootpoint> pieceFootpoints(const BezierPatch& patch, const Vec3
   search.search(gu, gv, nullptr, 0.0, 1.0, 0.0, 1.0, 0, 0, 0);
   if (boxBudget)
     *boxBudget -= search.boxes;
-  result = search.found;
+  return withSideMinima(patch, query, maxDistance, search.found);
+}
 
+// The interior minima `result` with the minima on the patch's sides, deduplicated, nearest
+// first.
+std::vector<PatchFootpoint> withSideMinima(
+  const BezierPatch& patch, const Vec3& query, double maxDistance, std::vector<PatchFootpoint> result)
+{
   // Minima on the boundary: minima of the side curves where moving inwards does not get
   // closer, i.e. the inward derivative of the squared distance is ≥ 0.
   for (int s = 0; s < 4; ++s)
@@ -1621,6 +1635,14 @@ bool patchComesWithin(const BezierPatch& patch, const Vec3& query, double radius
 {
   if (!(radius > 0.0) || distanceToBox(patch.boundingBox(), query) >= radius)
     return false;
+  // A swept patch's nearest point directly (SweptPatch.h): near a slanted cylinder's axis
+  // the sign test meets a tangency along a curve across both parameters, box by box.
+  if (const std::optional<SweptPatch> swept = sweptPatch(patch))
+  {
+    const std::vector<PatchFootpoint> near =
+      withSideMinima(patch, query, radius, sweptInteriorFootpoints(*swept, query, radius));
+    return !near.empty() && near.front().distance < radius;
+  }
   ComesWithin search;
   search.end = Work + static_cast<std::uint64_t>(BoxLimit);
   const bool within = search.negativeSomewhere(ballPolynomial(patch, query, radius), 0, 0);
