@@ -423,6 +423,9 @@ int matTable()
     fillet.Add(0.2, TopoDS::Edge(ex.Current()));
     matRow("wedge, one edge filleted", fillet.Shape());
   }
+  // Cylinders cut off by slanted planes (ruled patches between their sections).
+  matRow("box, two fillets meeting at a miter", exactmat::testparts::boxWithMiteredFillets());
+  matRow("rod cut at an angle at both ends", exactmat::testparts::rodCutAtAngles());
   return 0;
 }
 

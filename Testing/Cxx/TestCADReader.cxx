@@ -23,7 +23,6 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
-#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -367,39 +366,8 @@ std::map<std::string, TopoDS_Shape> solids()
       fillet.Add(0.3, TopoDS::Edge(ex.Current()));
     s["box-all-edges-filleted"] = fillet.Shape();
   }
-  {
-    // Two fillets of one radius on edges that meet at a corner: OpenCASCADE miters them,
-    // each cylinder cut where they meet by a slanted plane (an ellipse): ruled patches.
-    TopoDS_Shape box = BRepPrimAPI_MakeBox(4, 2, 3).Shape();
-    TopTools_IndexedMapOfShape edges;
-    TopExp::MapShapes(box, TopAbs_EDGE, edges);
-    const TopoDS_Edge first = TopoDS::Edge(edges(1));
-    BRepFilletAPI_MakeFillet fillet(box);
-    fillet.Add(0.4, first);
-    for (int k = 2; k <= edges.Extent(); ++k)
-    {
-      const TopoDS_Edge e = TopoDS::Edge(edges(k));
-      if (TopExp::FirstVertex(e).IsSame(TopExp::FirstVertex(first)))
-      {
-        fillet.Add(0.4, e);
-        break;
-      }
-    }
-    s["box-mitered-fillets"] = fillet.Shape();
-  }
-  {
-    // A rod cut at an angle at both ends: its side a cylinder between two ellipses (and
-    // its seam), its ends elliptic discs.
-    TopoDS_Shape rod = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0.3, -0.2, -3), gp_Dir(0, 0, 1)), 1.0, 6.0).Shape();
-    for (const auto& [angle, z, above] : { std::tuple{ 0.5, 1.8, true }, std::tuple{ -0.3, -2.1, false } })
-    {
-      gp_Trsf turn;
-      turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, z), gp_Dir(1, 0.2, 0)), angle);
-      const TopoDS_Shape slab = BRepPrimAPI_MakeBox(gp_Pnt(-5, -5, above ? z : z - 10), 10, 10, 10).Shape();
-      rod = BRepAlgoAPI_Cut(rod, BRepBuilderAPI_Transform(slab, turn).Shape()).Shape();
-    }
-    s["rod-cut-at-angles"] = rod;
-  }
+  s["box-mitered-fillets"] = exactmat::testparts::boxWithMiteredFillets();
+  s["rod-cut-at-angles"] = exactmat::testparts::rodCutAtAngles();
   {
     // 16 holes of three radii in one face: its polygon has 17 loops (VTK's contour
     // triangulator dropped triangles here; CGAL's constrained triangulation does not).

@@ -474,6 +474,7 @@ MedialSheetMesh CapSheetBuilder::run()
   mesh.apexCircleCentre = middle;
   mesh.apexCircleAxis = (circle[16] - circle[0]).cross(circle[32] - circle[0]).normalized();
   mesh.apexCircleRadius = (circle[0] - middle).norm();
+  mesh.apexReach = Options.tolerance * Size;
   // Each vertex's canal foot (the border's and the apex's: none), to start its
   // neighbours' from.
   std::vector<CanalFoot> feet(mesh.vertices.size());

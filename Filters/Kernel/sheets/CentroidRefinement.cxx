@@ -41,11 +41,14 @@ void refineByCentroids(DomainTriangulation& domain, MedialSheetMesh& mesh, const
       // square root of the distance to it, and across a thin sheet they swing round the
       // solid, so a small triangle may touch a large, curved piece of a face — which its
       // corners' touches then do not describe (the coverage check measures the footprints).
-      // (Not at an apex: its touch is one point of a whole circle.)
+      // (Not from an apex, nor from a ball within apexReach of it: their touches are points
+      // of a whole circle, anywhere round it however close the balls come — a cap cut at a
+      // slant put 200,000 vertices within 1e-12 of its apex — and the circle is the centre
+      // curve's footprint.)
       double edge = std::max({ (a.x - b.x).norm(), (b.x - c.x).norm(), (c.x - a.x).norm() });
       for (int k = 0; k < 2; ++k)
         for (int i = 0; i < 3; ++i)
-          if (t[i] != mesh.apex && t[(i + 1) % 3] != mesh.apex)
+          if (!mesh.nearApex(t[i]) && !mesh.nearApex(t[(i + 1) % 3]))
             edge = std::max(edge, (mesh.vertices[t[i]].touch[k] - mesh.vertices[t[(i + 1) % 3]].touch[k]).norm());
       SheetVertex v = ball(w, t);
       v.domain = w;

@@ -405,7 +405,15 @@ std::vector<FaceCoverage> sheetCoverage(const Boundary3D& boundary, const std::v
       };
       for (const auto& t : mesh.triangles)
       {
-        const int at = k == 1 && mesh.apex >= 0 ? static_cast<int>(std::find(t.begin(), t.end(), mesh.apex) - t.begin()) : 3;
+        int at = 3, atApex = 0;
+        for (int a = 0; a < 3 && k == 1; ++a)
+          if (mesh.nearApex(t[a]))
+          {
+            at = a;
+            ++atApex;
+          }
+        if (atApex >= 2)
+          continue; // (its touches lie on the circle: no area)
         if (at < 3)
         {
           // The apex touches a whole circle: the triangle covers the strip between the

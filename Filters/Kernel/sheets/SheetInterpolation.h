@@ -91,6 +91,15 @@ struct MedialSheetMesh
   int apex = -1;
   Vec3 apexCircleCentre = Vec3::Zero(), apexCircleAxis = Vec3::UnitZ();
   double apexCircleRadius = 0.0;
+  /// Vertices whose balls are within this of the apex's (centre and radius) stand for it:
+  /// their touches on side 1 are points of its circle, anywhere round it (a cap cut at a
+  /// slant); triangles with two or three such corners cover nothing there, with one the band.
+  double apexReach = 0.0;
+  bool nearApex(int v) const
+  {
+    return apex >= 0 && (v == apex ||
+      ((vertices[v].x - vertices[apex].x).norm() <= apexReach && std::abs(vertices[v].r - vertices[apex].r) <= apexReach));
+  }
   double area() const;
 };
 
