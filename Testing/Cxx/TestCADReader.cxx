@@ -611,7 +611,11 @@ TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
     // (A cone with its apex: the centre curve's balls shrink into the apex, where every
     // emptiness test of the cone's own face was undecided down to depth 24 along the circle
     // of tangency — the run did not end. The searches are bounded now.)
-    { "cone-with-apex", BRepPrimAPI_MakeCone(1.0, 0.0, 3.0).Shape(), 1 } };
+    { "cone-with-apex", BRepPrimAPI_MakeCone(1.0, 0.0, 3.0).Shape(), 1 },
+    // (A rod cut at an angle at both ends: its side ruled patches between ellipses, whose
+    // closest points near the axis ran out of boxes, and whose slanted cone sheets refined
+    // toward their apexes without end — 2026-11-29.)
+    { "rod-cut-at-angles", exactmat::testparts::rodCutAtAngles(), 2 } };
   for (const Case& c : cases)
   {
     SCOPED_TRACE(c.name);
@@ -657,6 +661,29 @@ TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
       // (The fused file's faces are known to about 1e-12 of its size of 7.5.)
       EXPECT_NEAR(lowest, 0.0, 1e-10);
       EXPECT_NEAR(highest, 4.0, 1e-10);
+    }
+    if (c.name == "rod-cut-at-angles")
+    {
+      // The axis (0.3, −0.2, z), radius 1, ends where its ball touches a slanted end: the
+      // plane through (0, 0, z0) turned by a about d = (1, 0.2, 0)/|·| has the normal
+      // (sin a·d_y, −sin a·d_x, cos a); the ball lies 1 below the upper one, above the lower.
+      auto end = [](double a, double z0, double side) {
+        const double dx = 1.0 / std::hypot(1.0, 0.2), dy = 0.2 / std::hypot(1.0, 0.2);
+        return z0 + (side - std::sin(a) * (0.3 * dy + 0.2 * dx)) / std::cos(a);
+      };
+      vtkPolyData* out = mat->GetOutput();
+      double lowest = INFINITY, highest = -INFINITY;
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        out->GetPoint(i, x);
+        EXPECT_NEAR(std::hypot(x[0] - 0.3, x[1] + 0.2), 0.0, 1e-10);
+        EXPECT_NEAR(out->GetPointData()->GetArray(arrays::Radius)->GetTuple1(i), 1.0, 1e-10);
+        lowest = std::min(lowest, x[2]);
+        highest = std::max(highest, x[2]);
+      }
+      EXPECT_NEAR(lowest, end(-0.3, -2.1, 1.0), 1e-9);
+      EXPECT_NEAR(highest, end(0.5, 1.8, -1.0), 1e-9);
     }
   }
 }

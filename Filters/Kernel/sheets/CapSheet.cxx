@@ -474,7 +474,9 @@ MedialSheetMesh CapSheetBuilder::run()
   mesh.apexCircleCentre = middle;
   mesh.apexCircleAxis = (circle[16] - circle[0]).cross(circle[32] - circle[0]).normalized();
   mesh.apexCircleRadius = (circle[0] - middle).norm();
-  mesh.apexReach = Options.tolerance * Size;
+  // (Within a longest edge of the apex — a quarter of its radius at most: farther out the
+  // footprint-edge test resolves the touches' angles round the circle.)
+  mesh.apexReach = std::max(Options.tolerance * Size, std::min(Options.maxEdge * Size, 0.25 * End.radius));
   // Each vertex's canal foot (the border's and the apex's: none), to start its
   // neighbours' from.
   std::vector<CanalFoot> feet(mesh.vertices.size());

@@ -92,8 +92,10 @@ struct MedialSheetMesh
   Vec3 apexCircleCentre = Vec3::Zero(), apexCircleAxis = Vec3::UnitZ();
   double apexCircleRadius = 0.0;
   /// Vertices whose balls are within this of the apex's (centre and radius) stand for it:
-  /// their touches on side 1 are points of its circle, anywhere round it (a cap cut at a
-  /// slant); triangles with two or three such corners cover nothing there, with one the band.
+  /// their touches on side 1 swing round its circle with the direction from the apex,
+  /// however close they come (a cap cut at a slant), so the band from the circle to the
+  /// farther vertices measures what the triangles there cover; triangles with two or three
+  /// such corners add nothing to it.
   double apexReach = 0.0;
   bool nearApex(int v) const
   {
