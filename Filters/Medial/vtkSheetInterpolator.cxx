@@ -639,6 +639,14 @@ void vtkSheetInterpolator::Interpolate(vtkPolyData* mat, vtkUnstructuredGrid* gr
         }
     });
   });
+  // A sheet no seam borders was found from its convex edges: two faces meeting at one have
+  // a sheet along it, so an empty one is a sheet whose other borders were not found (two
+  // fillets across their miter: smooth edges and their spines' end), said as such rather
+  // than left to the coverage check alone.
+  for (size_t k = 0; k < groups.size(); ++k)
+    if (errors[k].empty() && filled[k].triangles.empty() && groups[k].traced.empty())
+      errors[k] = "3D MAT sheets: the sheet of " + labels[k] + " has no border but its convex edges (its borders "
+        "across smooth edges or at a centre curve's end are not found)";
   // Sheets no seam borders, found beyond the borders of those built (as interpolateSheets
   // does): each new one is a tuple of its own, appended to the sheet arrays.
   addTransitionSheets(boundary, generators, groups, borders, filled, errors, options);
