@@ -342,6 +342,28 @@ std::vector<TopoDS_Edge> occtEdges(const Shape& shape)
   return edges;
 }
 
+// A file through vtkMAT3DFilter and vtkSheetInterpolator as `exactmat 3d` runs them, the
+// filters' error messages recorded.
+struct MATPipeline
+{
+  vtkNew<vtkCADBoundaryReader> reader;
+  vtkNew<vtkMAT3DFilter> mat;
+  vtkNew<vtkSheetInterpolator> sheets;
+  std::string matErrors, sheetErrors;
+  explicit MATPipeline(const std::string& file)
+  {
+    reader->SetFileName(file.c_str());
+    mat->SetInputConnection(reader->GetOutputPort());
+    sheets->SetInputConnection(mat->GetOutputPort());
+    sheets->SetSourceConnection(reader->GetOutputPort());
+    auto sheetWatch = ErrorRecorder::watch(sheets);
+    auto matWatch = ErrorRecorder::watch(mat);
+    sheets->Update();
+    matErrors = matWatch->Messages;
+    sheetErrors = sheetWatch->Messages;
+  }
+};
+
 std::map<std::string, TopoDS_Shape> solids()
 {
   std::map<std::string, TopoDS_Shape> s;
@@ -554,18 +576,11 @@ TEST(vtkCADBoundaryReader, SphereMATIsItsCentre)
       writeStep(sphere, file);
     else
       writeIges(sphere, file);
-    vtkNew<vtkCADBoundaryReader> reader;
-    reader->SetFileName(file.c_str());
-    vtkNew<vtkMAT3DFilter> mat;
-    mat->SetInputConnection(reader->GetOutputPort());
-    vtkNew<vtkSheetInterpolator> sheets;
-    sheets->SetInputConnection(mat->GetOutputPort());
-    sheets->SetSourceConnection(reader->GetOutputPort());
-    auto errors = ErrorRecorder::watch(sheets);
-    auto matErrors = ErrorRecorder::watch(mat);
-    sheets->Update();
-    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
-    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    const MATPipeline run(file);
+    ASSERT_TRUE(run.matErrors.empty()) << run.matErrors;
+    ASSERT_TRUE(run.sheetErrors.empty()) << run.sheetErrors;
+    vtkMAT3DFilter* mat = run.mat;
+    vtkSheetInterpolator* sheets = run.sheets;
     EXPECT_TRUE(mat->GetVerificationPassed());
     EXPECT_EQ(mat->GetNumberOfSphereCentres(), 1);
     EXPECT_EQ(mat->GetNumberOfJunctions(), 0);
@@ -625,18 +640,11 @@ TEST(vtkCADBoundaryReader, CanalSolidsAreComplete)
 #endif
     const std::string file = output("cad-canal-" + c.name + ".step");
     writeStep(c.shape, file);
-    vtkNew<vtkCADBoundaryReader> reader;
-    reader->SetFileName(file.c_str());
-    vtkNew<vtkMAT3DFilter> mat;
-    mat->SetInputConnection(reader->GetOutputPort());
-    vtkNew<vtkSheetInterpolator> sheets;
-    sheets->SetInputConnection(mat->GetOutputPort());
-    sheets->SetSourceConnection(reader->GetOutputPort());
-    auto errors = ErrorRecorder::watch(sheets);
-    auto matErrors = ErrorRecorder::watch(mat);
-    sheets->Update();
-    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
-    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    const MATPipeline run(file);
+    ASSERT_TRUE(run.matErrors.empty()) << run.matErrors;
+    ASSERT_TRUE(run.sheetErrors.empty()) << run.sheetErrors;
+    vtkMAT3DFilter* mat = run.mat;
+    vtkSheetInterpolator* sheets = run.sheets;
     EXPECT_TRUE(mat->GetVerificationPassed());
     EXPECT_EQ(mat->GetNumberOfCentreCurves(), 1);
     EXPECT_EQ(mat->GetNumberOfSeams(), 0);
@@ -704,18 +712,11 @@ TEST(vtkCADBoundaryReader, LPrismWithSquareLegsIsComplete)
   l.Close();
   const std::string file = output("cad-square-legs.step");
   writeStep(BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(l.Wire()).Face(), gp_Vec(0, 0, 1)).Shape(), file);
-  vtkNew<vtkCADBoundaryReader> reader;
-  reader->SetFileName(file.c_str());
-  vtkNew<vtkMAT3DFilter> mat;
-  mat->SetInputConnection(reader->GetOutputPort());
-  vtkNew<vtkSheetInterpolator> sheets;
-  sheets->SetInputConnection(mat->GetOutputPort());
-  sheets->SetSourceConnection(reader->GetOutputPort());
-  auto errors = ErrorRecorder::watch(sheets);
-  auto matErrors = ErrorRecorder::watch(mat);
-  sheets->Update();
-  ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
-  ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+  const MATPipeline run(file);
+  ASSERT_TRUE(run.matErrors.empty()) << run.matErrors;
+  ASSERT_TRUE(run.sheetErrors.empty()) << run.sheetErrors;
+  vtkMAT3DFilter* mat = run.mat;
+  vtkSheetInterpolator* sheets = run.sheets;
   EXPECT_TRUE(mat->GetVerificationPassed());
   EXPECT_EQ(mat->GetNumberOfTopologyProblems(), 0);
   EXPECT_EQ(mat->GetNumberOfJunctions(), 5);
@@ -772,18 +773,11 @@ TEST(vtkCADBoundaryReader, FilletedEdgesAreComplete)
     SCOPED_TRACE(c.name);
     const std::string file = output("cad-fillet-" + c.name + ".step");
     writeStep(c.shape, file);
-    vtkNew<vtkCADBoundaryReader> reader;
-    reader->SetFileName(file.c_str());
-    vtkNew<vtkMAT3DFilter> mat;
-    mat->SetInputConnection(reader->GetOutputPort());
-    vtkNew<vtkSheetInterpolator> sheets;
-    sheets->SetInputConnection(mat->GetOutputPort());
-    sheets->SetSourceConnection(reader->GetOutputPort());
-    auto errors = ErrorRecorder::watch(sheets);
-    auto matErrors = ErrorRecorder::watch(mat);
-    sheets->Update();
-    ASSERT_TRUE(matErrors->Messages.empty()) << matErrors->Messages;
-    ASSERT_TRUE(errors->Messages.empty()) << errors->Messages;
+    const MATPipeline run(file);
+    ASSERT_TRUE(run.matErrors.empty()) << run.matErrors;
+    ASSERT_TRUE(run.sheetErrors.empty()) << run.sheetErrors;
+    vtkMAT3DFilter* mat = run.mat;
+    vtkSheetInterpolator* sheets = run.sheets;
     EXPECT_TRUE(mat->GetVerificationPassed());
     EXPECT_EQ(mat->GetNumberOfTopologyProblems(), 0);
     EXPECT_EQ(mat->GetNumberOfJunctions(), 4);
