@@ -426,6 +426,7 @@ int matTable()
   // Cylinders cut off by slanted planes (ruled patches between their sections).
   matRow("box, two fillets meeting at a miter", exactmat::testparts::boxWithMiteredFillets());
   matRow("rod cut at an angle at both ends", exactmat::testparts::rodCutAtAngles());
+  matRow("plate with a hole drilled at 20°", exactmat::testparts::plateWithAngledHole(0.35));
   return 0;
 }
 

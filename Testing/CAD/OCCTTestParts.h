@@ -22,6 +22,7 @@
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <cmath>
 #include <tuple>
 
 namespace exactmat
@@ -87,6 +88,16 @@ inline TopoDS_Shape rodCutAtAngles()
     rod = BRepAlgoAPI_Cut(rod, BRepBuilderAPI_Transform(slab, turn).Shape()).Shape();
   }
   return rod;
+}
+// A 4 × 3 × 1 plate with a hole of radius 0.4 drilled through its middle at `tilt` radians
+// from the normal (about y): the hole's wall a cylinder between two ellipses.
+inline TopoDS_Shape plateWithAngledHole(double tilt)
+{
+  const TopoDS_Shape plate = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 4, 3, 1).Shape();
+  const gp_Dir axis(std::sin(tilt), 0, std::cos(tilt));
+  const TopoDS_Shape drill = BRepPrimAPI_MakeCylinder(
+    gp_Ax2(gp_Pnt(2 - 2 * std::sin(tilt), 1.5, 0.5 - 2.5 * std::cos(tilt)), axis), 0.4, 5).Shape();
+  return BRepAlgoAPI_Cut(plate, drill).Shape();
 }
 } // namespace testparts
 } // namespace exactmat
